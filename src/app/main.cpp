@@ -1,4 +1,91 @@
+// The `shellindent` command line. CLI11 lives in this translation unit only (it compiles
+// slowly); the commands themselves are plain functions in src/app/*_command.cpp.
+//
+// Exit codes: 0 success, 2 bad input (including bad options), 1 numerical failure, 3 internal.
+#include <CLI/CLI.hpp>
 #include <iostream>
-int main() {
-  std::cout << "shellindent\n";
+
+#include "app/section_command.hpp"
+#include "core/error.hpp"
+
+namespace {
+
+constexpr const char* kDescription =
+    "shellindent " SHELLINDENT_VERSION
+    " - static indentation of laminated composite shells by rigid indenters.\n"
+    "Section analysis (CLT, FSDT, variational-asymptotic Reissner-Mindlin law), with shell\n"
+    "elements, contact and path following to come. Quantities carry units: \"0.475 mm\",\n"
+    "\"130 GPa\", \"45 deg\". Internal units are mm, N, MPa.";
+
+constexpr const char* kSectionHelp =
+    "Section properties of a laminate: CLT A, B, D; VAM A_R, transverse shear G (VAM fit, FSDT "
+    "k = 5/6, equilibrium), load coupling F-bar and face compliance c_L.\n"
+    "Examples:\n"
+    "  shellindent section studies/paper_cap.yaml --json section.json\n"
+    "  shellindent section --layup \"[45/-45]2S\" --material paper-carbon-epoxy "
+    "--ply-thickness 0.475mm\n"
+    "  shellindent section --paper --out results   (all of the source paper's lay-ups)";
+
+int run(int argc, char** argv) {
+  CLI::App app{kDescription, "shellindent"};
+  app.set_version_flag("--version", SHELLINDENT_VERSION);
+  app.require_subcommand(1);
+  app.footer("Run 'shellindent COMMAND --help' for the options of a command.");
+
+  si::SectionCommandOptions so;
+  auto* section = app.add_subcommand("section", kSectionHelp);
+  section->add_option("case", so.case_file, "YAML case file (material and laminate are read)")
+      ->check(CLI::ExistingFile);
+  section->add_option("--layup", so.layup,
+                      "lay-up notation, first ply at the bottom, e.g. \"[0/90]2S\", "
+                      "\"[0_2/90_2]S\", \"[0/+-45/90]s\"");
+  section->add_option("--material", so.material, "library material for --layup (see 'materials')")
+      ->capture_default_str();
+  section->add_option("--ply-thickness", so.ply_thickness, "thickness of every ply, with unit");
+  section->add_option("--reference", so.reference,
+                      "reference surface: mid, bottom, top or a length above the mid-surface")
+      ->capture_default_str();
+  section->add_option("--json", so.json_path, "write the full result as JSON to this file");
+  section->add_flag("--paper", so.paper,
+                    "the source paper's lay-ups [theta/-theta]2S (theta = 0..90 by 15) and "
+                    "[0/90]2S: table, CSV and JSON in --out");
+  section->add_option("--out", so.out_dir, "output directory for --paper")->capture_default_str();
+  section->add_option("--vam-order", so.vam_order,
+                      "polynomial order of the through-thickness elements (>= 3 gives exact G)")
+      ->capture_default_str();
+
+  auto* materials = app.add_subcommand("materials", "List the built-in material library.");
+
+  std::string notation;
+  auto* layup = app.add_subcommand(
+      "layup", "Expand lay-up notation ply by ply (bottom to top) and print its compact form.");
+  layup->add_option("notation", notation, "e.g. \"[0/+-45/90]s\"")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+
+  if (*section) return si::run_section_command(so, std::cout);
+  if (*materials) return si::run_materials_command(std::cout);
+  if (*layup) return si::run_layup_command(notation, std::cout);
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const si::Error& e) {
+    std::cerr << "shellindent: error: " << e.what() << "\n";
+    return e.exit_code();
+  } catch (const std::exception& e) {
+    std::cerr << "shellindent: internal error: " << e.what() << "\n";
+    return 3;
+  }
 }

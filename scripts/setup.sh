@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Installs what is missing (Debian packages, idempotent) and builds shellindent.
+#   scripts/setup.sh [BUILD_DIR] [extra cmake args...]
+# Environment: SHELLINDENT_SKIP_APT=1 skips the package check (for machines set up by hand).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+BUILD_DIR="${1:-build}"
+shift || true
+
+# Debian packages of ../shared/docs/toolchain.md. libopenblas0-pthread switches the
+# libblas.so.3 alternative: CHOLMOD and UMFPACK measured about 1.6x faster than reference BLAS.
+PACKAGES=(
+  cmake ninja-build g++ pkg-config clang-format
+  libsundials-dev libeigen3-dev libsuitesparse-dev libopenblas0-pthread
+  libnlopt-cxx-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
+  libgtest-dev libbenchmark-dev
+  python3 python3-matplotlib python3-numpy
+)
+
+missing=()
+if [[ "${SHELLINDENT_SKIP_APT:-0}" != 1 ]]; then
+  for p in "${PACKAGES[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$p")
+    fi
+  done
+fi
+if ((${#missing[@]})); then
+  echo "setup: installing missing packages: ${missing[*]}" >&2
+  SUDO=""
+  if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+else
+  echo "setup: all required packages are installed" >&2
+fi
+
+GENERATOR=()
+if command -v ninja >/dev/null; then GENERATOR=(-G Ninja); fi
+if [[ ! -f "$BUILD_DIR/CMakeCache.txt" ]]; then
+  cmake -S . -B "$BUILD_DIR" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=Release "$@" >&2
+else
+  cmake -S . -B "$BUILD_DIR" "$@" >/dev/null
+fi
+cmake --build "$BUILD_DIR" -j"$(nproc)" >&2
+echo "setup: built $BUILD_DIR/shellindent" >&2
