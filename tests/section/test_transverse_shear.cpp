@@ -98,6 +98,18 @@ TEST(TransverseShear, PaganoCrossPly_VamSection11_3) {
   EXPECT_NEAR(fsdt(1, 1), 0.25, 1e-14);
 }
 
+// vam.md 10.3: for angle plies the equilibrium G has a coupling term, "776 vs 2121 N/mm for
+// [15/-15]2S" (equilibrium vs VAM), printed to the unit. Checks the off-diagonal of the 2x2
+// construction, which the cross-ply references cannot (their G12 is zero).
+TEST(TransverseShear, EquilibriumAnglePlyCoupling_VamSection10_3) {
+  const Laminate laminate =
+      make_laminate(paper_material(), kPaperPly, symmetric(repeat({15, -15}, 2)));
+  const Matrix2d eq = equilibrium_shear_stiffness(laminate);
+  EXPECT_NEAR(eq(0, 1), 776, 1.0);
+  EXPECT_NEAR(eq(1, 0), 776, 1.0);
+  EXPECT_LE(std::abs(fsdt_shear_stiffness(laminate)(0, 1)), 1e-13 * max_abs(eq));
+}
+
 // Homogeneous plate: the equilibrium shear stress is the parabola 3/(2h) (1 - 4 x3^2/h^2) in
 // every direction, whose complementary energy gives G = 5/6 h C_s for the full 2x2 block
 // (Whitney 1973; vam.md 10.3), isotropic or orthotropic, at any fibre angle.
