@@ -271,11 +271,12 @@ std::string format_plies(const std::vector<double>& angles) {
   return out;
 }
 
-// "[base]k" with the smallest period, or "[plies]" when that is shorter.
+// "[base]k" with the smallest period of two or more plies, or "[plies]" when that is shorter
+// (a single repeated angle reads better as a run, "[0_4]", than as "[0]4").
 std::string format_with_repetition(const std::vector<double>& angles, const std::string& suffix) {
   std::string best = "[" + format_plies(angles) + "]" + suffix;
   const size_t n = angles.size();
-  for (size_t period = 1; period < n; ++period) {
+  for (size_t period = 2; period < n; ++period) {
     if (n % period != 0) continue;
     bool periodic = true;
     for (size_t i = period; i < n && periodic; ++i) periodic = angles[i] == angles[i - period];
