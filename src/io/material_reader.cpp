@@ -31,13 +31,14 @@ Material read_library_material(const YAML::Node& node, const Where& context) {
 }
 
 // Material's validation names the constant ("nu12"); point the user at it in the file, with the
-// value as written. Errors about several constants at once are reported at the whole material.
+// value as written. Errors about several constants at once (positive definiteness) are reported
+// at the whole material; their reason names the constants.
 Error at_constant(const Error& e, const MapReader& map) {
   const std::string& constant = e.where().key;
   if (map.has(constant)) return Error(e.kind(), e.reason(), map.where(constant));
   Where w = map.where();
   w.value = e.where().value;
-  return Error(e.kind(), e.reason() + " (" + constant + ")", w);
+  return Error(e.kind(), e.reason(), w);
 }
 
 Material read_inline_material(const MapReader& map) {

@@ -58,10 +58,10 @@ double read_quantity(const YAML::Node& node, const Where& where, Dimension dim) 
 }
 
 MapReader::MapReader(const YAML::Node& node, Where where) : node_(node), where_(std::move(where)) {
-  if (where_.line == 0) where_.line = line_of(node);
   if (!node.IsMap()) {
     Where w = where_;
     w.value = text_of(node);
+    if (w.line == 0) w.line = line_of(node);
     throw_input("expected a map of keys, got " + kind_of(node), w);
   }
 }

@@ -41,8 +41,8 @@ E read_choice(const YAML::Node& node, const Where& where, const Choices<E>& choi
   return choices[read_choice_index(node, where, names)].second;
 }
 
-// A YAML map being read at a known dotted path of a known file. Keys that are absent fall back to
-// the map's own line in messages.
+// A YAML map being read at a known dotted path of a known file. Keys that are absent are reported
+// at where.line, the line of the key that holds the map (0 at the top level: no line to point at).
 class MapReader {
  public:
   // Throws unless `node` is a map. `where.key` is the map's dotted path ("" at the top level).
