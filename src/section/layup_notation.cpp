@@ -24,6 +24,7 @@ void append(std::vector<double>& to, const std::vector<double>& from) {
 
 std::vector<double> repeated(const std::vector<double>& angles, long count) {
   std::vector<double> out;
+  out.reserve(angles.size() * static_cast<size_t>(count));
   for (long k = 0; k < count; ++k) append(out, angles);
   return out;
 }
@@ -81,7 +82,7 @@ class LayupParser {
       skip_spaces();
       if (!accept(")")) fail(at_end() ? "missing ')'" : "expected '/' or ')'");
       const bool underscore = accept("_");
-      if (underscore || is_digit()) group = repeated(group, parse_count());
+      if (underscore || is_digit()) group = repeat_checked(group);
       return {group, false};
     }
     return parse_ply();
@@ -118,7 +119,7 @@ class LayupParser {
       return item;
     }
     if (pair) fail("a count on a ± ply is ambiguous; write (±a)n");
-    item.angles = repeated(item.angles, parse_count());
+    item.angles = repeat_checked(item.angles);
     return item;
   }
 
@@ -175,10 +176,7 @@ class LayupParser {
     const size_t count_pos = pos_;
     const bool underscore = accept("_");
     const bool has_count = underscore || is_digit();
-    if (has_count) {
-      angles = repeated(angles, parse_count());
-      check_size(angles.size());
-    }
+    if (has_count) angles = repeat_checked(angles);
     skip_spaces();
     if (accept("S") || accept("s")) {
       if (mid_plane_ply_ && has_count) {
@@ -193,6 +191,17 @@ class LayupParser {
       fail("'_h' needs a symmetric lay-up ('S')");
     }
     return angles;
+  }
+
+  // Reads a count and repeats `angles`, refusing (before allocating) a result that is too long.
+  std::vector<double> repeat_checked(const std::vector<double>& angles) {
+    const size_t start = pos_;
+    const long count = parse_count();
+    if (angles.size() * static_cast<size_t>(count) > kMaxPlies) {
+      pos_ = start;
+      check_size(angles.size() * static_cast<size_t>(count));
+    }
+    return repeated(angles, count);
   }
 
   void check_size(size_t n) const {

@@ -144,6 +144,7 @@ TEST(LayupNotation, RejectsMalformedStringsWithPosition) {
       {"[0/90]T2", "unexpected '2' after the lay-up at character 8"},
       {"[0_5000]", "repetition count above 1000 at character 4"},
       {"", "a lay-up must start with '[' at character 1"},
+      {"[((0_1000)1000)1000]", "more than 100000 plies at character 11"},
   };
   for (const auto& c : cases) {
     try {
