@@ -184,10 +184,13 @@ PathSpec read_path(const MapReader& top) {
   path.method = map->choice_or("method", kMethods, path.method);
   path.depth_max = map->positive_or("depth_max", Dimension::kLength, path.depth_max);
   path.step = map->positive_or("step", Dimension::kLength, path.step);
-  if (path.step > path.depth_max)
-    throw_input(
-        "step exceeds depth_max (" + format_quantity(path.depth_max, Dimension::kLength) + ")",
-        map->where("step"));
+  if (path.step > path.depth_max) {
+    // Point at what the user wrote: a short depth_max can clash with the default step.
+    throw_input("step (" + format_quantity(path.step, Dimension::kLength) +
+                    ") exceeds depth_max (" + format_quantity(path.depth_max, Dimension::kLength) +
+                    ")",
+                map->where(map->has("step") ? "step" : "depth_max"));
+  }
   path.step_min = map->positive_or("step_min", Dimension::kLength, path.step / 1000.0);
   path.step_max =
       map->positive_or("step_max", Dimension::kLength, std::min(10.0 * path.step, path.depth_max));

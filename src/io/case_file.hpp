@@ -103,8 +103,9 @@ struct CaseFile {
   std::string file;  // the file (or label) the case was read from
 };
 
-// Reads and validates a case file. Every error is an input si::Error naming the file, the dotted
-// key, the value as written and the 1-based line.
+// Reads and validates a case file. Every error is an input si::Error naming the file and, where
+// they exist, the dotted key, the value as written and the 1-based line (a missing file or an
+// empty one has no key or line; a missing key has no value).
 CaseFile read_case_file(const std::string& path);
 
 // As read_case_file, from text; `file_label` stands for the file name in messages.

@@ -217,7 +217,12 @@ TEST(CaseFileErrors, NegativeStep) {
 
 TEST(CaseFileErrors, StepAboveDepthMax) {
   expect_error(kHead + "path: {depth_max: 1 mm, step: 2 mm}\n",
-               {"path.step", "2 mm", 3, "step exceeds depth_max (1 mm)"});
+               {"path.step", "2 mm", 3, "step (2 mm) exceeds depth_max (1 mm)"});
+}
+
+TEST(CaseFileErrors, DepthMaxShorterThanTheDefaultStep) {
+  expect_error(kHead + "path: {depth_max: 0.05 mm}\n",
+               {"path.depth_max", "0.05 mm", 3, "step (0.1 mm) exceeds depth_max (0.05 mm)"});
 }
 
 TEST(CaseFileErrors, StepMinAboveStepMax) {
