@@ -1,0 +1,291 @@
+#include "io/case_file.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+#include "core/units.hpp"
+#include "io/laminate_reader.hpp"
+#include "io/material_reader.hpp"
+#include "io/yaml_reader.hpp"
+
+namespace si {
+namespace {
+
+const Choices<EdgeCondition> kEdges{{"clamped", EdgeCondition::kClamped},
+                                    {"hinged", EdgeCondition::kHinged},
+                                    {"simply_supported", EdgeCondition::kSimplySupported},
+                                    {"free", EdgeCondition::kFree}};
+const Choices<ShellType> kShellTypes{{"spherical_cap", ShellType::kSphericalCap},
+                                     {"flat_circular_plate", ShellType::kFlatCircularPlate},
+                                     {"rectangular_plate", ShellType::kRectangularPlate},
+                                     {"cylindrical_panel", ShellType::kCylindricalPanel}};
+const Choices<ElementType> kElements{{"mitc4", ElementType::kMitc4},
+                                     {"bernstein4", ElementType::kBernstein4}};
+const Choices<Symmetry> kSymmetries{{"full", Symmetry::kFull}, {"quarter", Symmetry::kQuarter}};
+const Choices<Kinematics> kKinematics{{"linear", Kinematics::kLinear},
+                                      {"nonlinear", Kinematics::kNonlinear}};
+const Choices<IndenterShape> kShapes{{"sphere", IndenterShape::kSphere},
+                                     {"superquadric", IndenterShape::kSuperquadric},
+                                     {"flat_punch", IndenterShape::kFlatPunch},
+                                     {"cylinder", IndenterShape::kCylinder}};
+const Choices<ContactSurface> kSurfaces{{"outer", ContactSurface::kOuter},
+                                        {"mid", ContactSurface::kMid}};
+const Choices<ContactSolver> kSolvers{{"kinsol", ContactSolver::kKinsol},
+                                      {"active_set", ContactSolver::kActiveSet}};
+const Choices<LocalContactModel> kLocalModels{{"none", LocalContactModel::kNone},
+                                              {"hertz", LocalContactModel::kHertz},
+                                              {"yang_sun", LocalContactModel::kYangSun},
+                                              {"vam", LocalContactModel::kVam}};
+const Choices<PathMethod> kMethods{{"natural", PathMethod::kNatural},
+                                   {"pseudo_arclength", PathMethod::kPseudoArclength}};
+const Choices<OutputFormat> kFormats{
+    {"csv", OutputFormat::kCsv}, {"json", OutputFormat::kJson}, {"vtu", OutputFormat::kVtu}};
+
+// A section given as a map, or std::nullopt when the section is absent (defaults apply).
+std::optional<MapReader> section(const MapReader& top, const std::string& key) {
+  if (!top.has(key)) return std::nullopt;
+  return MapReader(top.at(key), top.where(key));
+}
+
+// A section's geometry keys are required once the section is written: a partly written shell
+// silently completed with the paper's numbers would be a surprise.
+ShellSpec read_shell(const MapReader& top) {
+  ShellSpec shell;
+  const auto map = section(top, "shell");
+  if (!map) return shell;
+  shell.type = map->choice("type", kShellTypes);
+  switch (shell.type) {
+    case ShellType::kSphericalCap:
+      map->allow_only({"type", "base_radius", "radius", "edge"});
+      shell.base_radius = map->positive("base_radius", Dimension::kLength);
+      shell.radius = map->positive("radius", Dimension::kLength);
+      if (shell.base_radius > shell.radius)
+        throw_input("a spherical cap's base radius cannot exceed the sphere radius (" +
+                        map->scalar("radius") + ")",
+                    map->where("base_radius"));
+      break;
+    case ShellType::kFlatCircularPlate:
+      map->allow_only({"type", "radius", "edge"});
+      shell.radius = map->positive("radius", Dimension::kLength);
+      break;
+    case ShellType::kRectangularPlate:
+      map->allow_only({"type", "length_x", "length_y", "edge"});
+      shell.length_x = map->positive("length_x", Dimension::kLength);
+      shell.length_y = map->positive("length_y", Dimension::kLength);
+      break;
+    case ShellType::kCylindricalPanel:
+      map->allow_only({"type", "radius", "length", "angle", "edge"});
+      shell.radius = map->positive("radius", Dimension::kLength);
+      shell.length = map->positive("length", Dimension::kLength);
+      shell.angle_deg = map->positive("angle", Dimension::kAngle);
+      if (shell.angle_deg > 360.0) throw_input("must not exceed 360 deg", map->where("angle"));
+      break;
+  }
+  shell.edge = map->choice_or("edge", kEdges, shell.edge);
+  return shell;
+}
+
+MeshSpec read_mesh(const MapReader& top) {
+  MeshSpec mesh;
+  const auto map = section(top, "mesh");
+  if (!map) return mesh;
+  map->allow_only({"element", "size_apex", "size_edge", "refine_radius", "symmetry"});
+  mesh.element = map->choice_or("element", kElements, mesh.element);
+  mesh.size_apex = map->positive_or("size_apex", Dimension::kLength, mesh.size_apex);
+  mesh.size_edge = map->positive_or("size_edge", Dimension::kLength, mesh.size_edge);
+  mesh.refine_radius = map->positive_or("refine_radius", Dimension::kLength, mesh.refine_radius);
+  mesh.symmetry = map->choice_or("symmetry", kSymmetries, mesh.symmetry);
+  return mesh;
+}
+
+double read_exponent(const MapReader& map, const std::string& key) {
+  const double e = map.quantity_or(key, Dimension::kDimensionless, 1.0);
+  if (!(e > 0.0 && e <= 2.0))
+    throw_input("a superquadric exponent must lie in (0, 2] (convex shapes)", map.where(key));
+  return e;
+}
+
+IndenterSpec read_indenter(const MapReader& top) {
+  IndenterSpec indenter;
+  const auto map = section(top, "indenter");
+  if (!map) return indenter;
+  indenter.shape = map->choice_or("shape", kShapes, indenter.shape);
+  switch (indenter.shape) {
+    case IndenterShape::kSphere:
+      map->allow_only({"shape", "radius", "material"});
+      indenter.radius = map->positive("radius", Dimension::kLength);
+      break;
+    case IndenterShape::kSuperquadric:
+      map->allow_only({"shape", "a", "b", "c", "e1", "e2", "material"});
+      indenter.a = map->positive("a", Dimension::kLength);
+      indenter.b = map->positive("b", Dimension::kLength);
+      indenter.c = map->positive("c", Dimension::kLength);
+      indenter.e1 = read_exponent(*map, "e1");
+      indenter.e2 = read_exponent(*map, "e2");
+      break;
+    case IndenterShape::kFlatPunch:
+      map->allow_only({"shape", "radius", "edge_radius", "material"});
+      indenter.radius = map->positive("radius", Dimension::kLength);
+      indenter.edge_radius = map->quantity_or("edge_radius", Dimension::kLength, 0.0);
+      if (indenter.edge_radius < 0.0 || indenter.edge_radius >= indenter.radius)
+        throw_input("must lie in [0, radius)", map->where("edge_radius"));
+      break;
+    case IndenterShape::kCylinder:
+      map->allow_only({"shape", "radius", "length", "material"});
+      indenter.radius = map->positive("radius", Dimension::kLength);
+      indenter.length = map->positive("length", Dimension::kLength);
+      break;
+  }
+  if (map->has("material") && text_of(map->at("material")) != "rigid")
+    indenter.material = read_material(map->at("material"), map->where("material"));
+  return indenter;
+}
+
+ContactSpec read_contact(const MapReader& top) {
+  ContactSpec contact;
+  const auto map = section(top, "contact");
+  if (!map) return contact;
+  map->allow_only({"surface", "solver", "local"});
+  contact.surface = map->choice_or("surface", kSurfaces, contact.surface);
+  contact.solver = map->choice_or("solver", kSolvers, contact.solver);
+  contact.local = map->choice_or("local", kLocalModels, contact.local);
+  return contact;
+}
+
+std::vector<double> read_depths(const MapReader& map, double depth_max) {
+  const YAML::Node list = map.at("depths");
+  const Where list_where = map.where("depths");
+  if (!list.IsSequence() || list.size() == 0)
+    throw_input("expected a non-empty list of depths", list_where);
+  std::vector<double> depths;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const Where w{list_where.file, list_where.key + "[" + std::to_string(i) + "]", text_of(list[i]),
+                  line_of(list[i])};
+    const double d = read_quantity(list[i], w, Dimension::kLength);
+    if (!(d > 0.0) || d > depth_max)
+      throw_input("each depth must lie in (0, depth_max = " +
+                      format_quantity(depth_max, Dimension::kLength) + "]",
+                  w);
+    if (!depths.empty() && d <= depths.back()) throw_input("depths must increase strictly", w);
+    depths.push_back(d);
+  }
+  return depths;
+}
+
+PathSpec read_path(const MapReader& top) {
+  PathSpec path;
+  const auto map = section(top, "path");
+  if (!map) return path;
+  map->allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths"});
+  path.method = map->choice_or("method", kMethods, path.method);
+  path.depth_max = map->positive_or("depth_max", Dimension::kLength, path.depth_max);
+  path.step = map->positive_or("step", Dimension::kLength, path.step);
+  if (path.step > path.depth_max) {
+    // Point at what the user wrote: a short depth_max can clash with the default step.
+    throw_input("step (" + format_quantity(path.step, Dimension::kLength) +
+                    ") exceeds depth_max (" + format_quantity(path.depth_max, Dimension::kLength) +
+                    ")",
+                map->where(map->has("step") ? "step" : "depth_max"));
+  }
+  path.step_min = map->positive_or("step_min", Dimension::kLength, path.step / 1000.0);
+  path.step_max =
+      map->positive_or("step_max", Dimension::kLength, std::min(10.0 * path.step, path.depth_max));
+  if (path.step_min > path.step_max)
+    throw_input(
+        "step_min exceeds step_max (" + format_quantity(path.step_max, Dimension::kLength) + ")",
+        map->where("step_min"));
+  if (path.step < path.step_min || path.step > path.step_max)
+    throw_input("step must lie in [step_min, step_max] = [" +
+                    format_quantity(path.step_min, Dimension::kLength) + ", " +
+                    format_quantity(path.step_max, Dimension::kLength) + "]",
+                map->where("step"));
+  if (map->has("depths")) path.depths = read_depths(*map, path.depth_max);
+  return path;
+}
+
+std::vector<OutputFormat> read_formats(const MapReader& map) {
+  const YAML::Node list = map.at("formats");
+  const Where list_where = map.where("formats");
+  if (!list.IsSequence()) throw_input("expected a list such as [csv, vtu]", list_where);
+  std::vector<OutputFormat> formats;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const Where w{list_where.file, list_where.key + "[" + std::to_string(i) + "]", text_of(list[i]),
+                  line_of(list[i])};
+    formats.push_back(read_choice(list[i], w, kFormats));
+  }
+  return formats;
+}
+
+OutputSpec read_output(const MapReader& top) {
+  OutputSpec output;
+  const auto map = section(top, "output");
+  if (!map) return output;
+  map->allow_only({"dir", "vtu_every", "formats"});
+  output.dir = map->scalar_or("dir", output.dir);
+  output.vtu_every = map->integer_or("vtu_every", output.vtu_every);
+  if (output.vtu_every < 0)
+    throw_input("must be >= 0 (0 writes no VTU files)", map->where("vtu_every"));
+  if (map->has("formats")) output.formats = read_formats(*map);
+  return output;
+}
+
+MaterialTable read_materials(const MapReader& top) {
+  const Material default_material = read_material(top.at("material"), top.where("material"));
+  std::vector<Material> named;
+  if (top.has("materials")) named = read_material_map(top.at("materials"), top.where("materials"));
+  return MaterialTable{default_material, named};
+}
+
+// The text of a 1-based line, trimmed, to quote it in a syntax error.
+std::string line_text(const std::string& text, int line) {
+  std::istringstream in(text);
+  std::string current;
+  for (int i = 0; i < line; ++i)
+    if (!std::getline(in, current)) return "";
+  const size_t begin = current.find_first_not_of(" \t");
+  const size_t end = current.find_last_not_of(" \t\r");
+  return begin == std::string::npos ? "" : current.substr(begin, end - begin + 1);
+}
+
+}  // namespace
+
+CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_label) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::ParserException& e) {
+    const int line = e.mark.line >= 0 ? e.mark.line + 1 : 0;
+    throw_input("invalid YAML: " + e.msg, Where{file_label, "", line_text(yaml_text, line), line});
+  }
+  if (root.IsNull()) throw_input("the case file is empty", Where{file_label, "", "", 0});
+  const MapReader top(root, Where{file_label, "", "", 0});
+  top.allow_only({"material", "materials", "laminate", "shell", "mesh", "kinematics", "indenter",
+                  "contact", "path", "output"});
+  top.at("laminate");  // say it is missing before reading the rest
+  const MaterialTable materials = read_materials(top);
+  return CaseFile{read_laminate(top.at("laminate"), top.where("laminate"), materials),
+                  materials.default_material,
+                  read_shell(top),
+                  read_mesh(top),
+                  top.choice_or("kinematics", kKinematics, Kinematics::kNonlinear),
+                  read_indenter(top),
+                  read_contact(top),
+                  read_path(top),
+                  read_output(top),
+                  file_label};
+}
+
+CaseFile read_case_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!std::filesystem::is_regular_file(path) || !in)
+    throw_input("cannot open the case file (does it exist?)", Where{path, "", "", 0});
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_case_file(text.str(), path);
+}
+
+}  // namespace si
