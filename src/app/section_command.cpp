@@ -121,7 +121,7 @@ int run_section_command(const SectionCommandOptions& o, std::ostream& out) {
     if (!o.case_file.empty()) {
       if (!o.layup.empty()) throw_input("give either a case file or --layup, not both", kCommandLine);
       const CaseFile c = read_case_file(o.case_file);
-      return analyze_section(c.laminate, c.laminate_label, VamOptions{o.vam_order, 1});
+      return analyze_section(c.laminate, describe_laminate(c.laminate), VamOptions{o.vam_order, 1});
     }
     return section_from_options(o);
   }();

@@ -1,5 +1,6 @@
 #include "section/layup_notation.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -327,6 +328,18 @@ std::string format_layup(const std::vector<double>& angles_deg) {
                                            format_angle(angles_deg[n / 2]) + "_h]S";
   if (symmetric.size() <= best.size()) best = symmetric;
   return best;
+}
+
+std::string describe_laminate(const Laminate& laminate) {
+  const auto& plies = laminate.plies;
+  const bool uniform = !plies.empty() && std::all_of(plies.begin(), plies.end(), [&](const Ply& p) {
+    return p.material.name() == plies.front().material.name() &&
+           p.thickness == plies.front().thickness;
+  });
+  if (!uniform) return "ply list (" + std::to_string(plies.size()) + " plies)";
+  std::vector<double> angles;
+  for (const auto& p : plies) angles.push_back(p.angle_deg);
+  return format_layup(angles);
 }
 
 }  // namespace si

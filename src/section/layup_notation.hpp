@@ -22,6 +22,8 @@
 #include <string_view>
 #include <vector>
 
+#include "section/laminate.hpp"
+
 namespace si {
 
 // Expands a lay-up string into ply angles in degrees, bottom ply first. Throws an input
@@ -33,5 +35,9 @@ std::vector<double> parse_layup(std::string_view notation);
 // count and 'S' where they shorten it; parse_layup(format_layup(a)) == a for every non-empty
 // list of finite angles with |angle| <= 360. Throws an input si::Error for other lists.
 std::string format_layup(const std::vector<double>& angles_deg);
+
+// A short label for reports: the compact notation when every ply has the same material and
+// thickness, otherwise "ply list (N plies)".
+std::string describe_laminate(const Laminate& laminate);
 
 }  // namespace si
