@@ -143,15 +143,11 @@ struct MshContent {
 };
 
 void read_format(TokenStream& in) {
-  const int line = in.line();
   const std::string version = in.token("the MSH version");
+  if (version != "4.1") in.fail("MSH " + version + " is not supported, export as 4.1");
   const long long file_type = in.integer("the file type");
-  in.real("the data size");
-  if (version != "4.1") {
-    const std::string shown = version.rfind("2", 0) == 0 ? "2.2" : version;
-    throw_input("MSH " + shown + " is not supported, export as 4.1", {"", "", "", line});
-  }
   if (file_type != 0) in.fail("binary MSH files are not supported, export as ASCII 4.1");
+  in.real("the data size");
   in.expect("$EndMeshFormat");
 }
 

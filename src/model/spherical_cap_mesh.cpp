@@ -23,6 +23,18 @@ void validate(const SphericalCapMeshSpec& spec) {
     throw_input("the base radius must be positive and smaller than the sphere radius",
                 {"", "base_radius", std::to_string(spec.base_radius)});
   }
+  if (!positive(spec.size_apex) || spec.size_apex > spec.base_radius) {
+    throw_input("must be positive and at most the base radius",
+                {"", "size_apex", std::to_string(spec.size_apex)});
+  }
+  if (!positive(spec.size_edge) || spec.size_edge > spec.base_radius) {
+    throw_input("must be positive and at most the base radius",
+                {"", "size_edge", std::to_string(spec.size_edge)});
+  }
+  if (!(std::isfinite(spec.refine_radius) && spec.refine_radius >= 0)) {
+    throw_input("must be zero or positive",
+                {"", "refine_radius", std::to_string(spec.refine_radius)});
+  }
 }
 
 Mesh spherical_cap_mesh(const SphericalCapMeshSpec& spec) {
