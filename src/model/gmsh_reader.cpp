@@ -1,10 +1,10 @@
 #include "model/gmsh_reader.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <fstream>
 #include <map>
-#include <set>
 #include <vector>
 
 #include "core/error.hpp"
@@ -114,20 +114,49 @@ struct ElementType {
   const char* name;
 };
 
-// Gmsh element types (MSH format documentation, "elm-type"), those a surface mesh may contain.
-const std::map<int, ElementType>& element_types() {
-  static const std::map<int, ElementType> types = {
-      {1, {1, 2, "2-node line"}},           {2, {2, 3, "3-node triangle"}},
-      {3, {2, 4, "4-node quadrangle"}},     {4, {3, 4, "4-node tetrahedron"}},
-      {5, {3, 8, "8-node hexahedron"}},     {6, {3, 6, "6-node prism"}},
-      {7, {3, 5, "5-node pyramid"}},        {8, {1, 3, "3-node line"}},
-      {9, {2, 6, "6-node triangle"}},       {10, {2, 9, "9-node quadrangle"}},
-      {11, {3, 10, "10-node tetrahedron"}}, {15, {0, 1, "1-node point"}},
-      {16, {2, 8, "8-node quadrangle"}},    {20, {2, 9, "9-node triangle"}},
-      {21, {2, 10, "10-node triangle"}},    {26, {1, 4, "4-node line"}},
-      {27, {1, 5, "5-node line"}},          {28, {1, 6, "6-node line"}},
-  };
-  return types;
+// Gmsh element types (MSH format documentation, "elm-type") a surface mesh file may contain;
+// num_nodes = 0 for a type this reader does not know.
+ElementType element_type(long long type) {
+  switch (type) {
+    case 1:
+      return {1, 2, "2-node line"};
+    case 2:
+      return {2, 3, "3-node triangle"};
+    case 3:
+      return {2, 4, "4-node quadrangle"};
+    case 4:
+      return {3, 4, "4-node tetrahedron"};
+    case 5:
+      return {3, 8, "8-node hexahedron"};
+    case 6:
+      return {3, 6, "6-node prism"};
+    case 7:
+      return {3, 5, "5-node pyramid"};
+    case 8:
+      return {1, 3, "3-node line"};
+    case 9:
+      return {2, 6, "6-node triangle"};
+    case 10:
+      return {2, 9, "9-node quadrangle"};
+    case 11:
+      return {3, 10, "10-node tetrahedron"};
+    case 15:
+      return {0, 1, "1-node point"};
+    case 16:
+      return {2, 8, "8-node quadrangle"};
+    case 20:
+      return {2, 9, "9-node triangle"};
+    case 21:
+      return {2, 10, "10-node triangle"};
+    case 26:
+      return {1, 4, "4-node line"};
+    case 27:
+      return {1, 5, "5-node line"};
+    case 28:
+      return {1, 6, "6-node line"};
+    default:
+      return {0, 0, ""};
+  }
 }
 
 using EntityKey = std::pair<int, int>;  // (dimension, tag)
@@ -219,9 +248,8 @@ void read_elements(TokenStream& in, MshContent& msh) {
     const int entity = static_cast<int>(in.integer("an entity tag"));
     const long long type = in.integer("an element type");
     const int n = in.count("the number of elements in a block");
-    const auto it = element_types().find(static_cast<int>(type));
-    if (it == element_types().end()) in.fail("unsupported Gmsh element type", std::to_string(type));
-    const ElementType& info = it->second;
+    const ElementType info = element_type(type);
+    if (info.num_nodes == 0) in.fail("unsupported Gmsh element type", std::to_string(type));
     for (int k = 0; k < n; ++k) {
       const long long tag = in.integer("an element tag");
       if (info.dim == 3) {
@@ -342,10 +370,19 @@ Mesh read_gmsh_msh4(const std::string& path) {
                 {path, "", "", msh.quad_lines[b]});
   }
   compute_directors_from_elements(mesh);
+  // Element problems are reported with the element's Gmsh tag and line.
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    try {
+      check_element(mesh, e);
+    } catch (const Error& error) {
+      throw_input(error.reason() + " [Gmsh element " + std::to_string(msh.quad_tags[e]) + "]",
+                  {path, "", "", msh.quad_lines[e]});
+    }
+  }
   try {
     check_mesh(mesh);
-  } catch (const Error& e) {
-    throw e.within({path, "", "", 0});
+  } catch (const Error& error) {
+    throw error.within({path, "", "", 0});
   }
   return mesh;
 }

@@ -87,6 +87,11 @@ void check_shape(const Mesh& mesh, int e, const MeshQualityLimits& limits) {
                  "is too distorted: scaled Jacobian " + str(q.min_scaled_jacobian) + " < " +
                      str(limits.min_scaled_jacobian));
   }
+  if (q.jacobian_ratio < limits.min_jacobian_ratio) {
+    fail_element(mesh, e,
+                 "is too tapered: Jacobian ratio " + str(q.jacobian_ratio) + " < " +
+                     str(limits.min_jacobian_ratio));
+  }
   if (q.aspect_ratio > limits.max_aspect_ratio) {
     fail_element(mesh, e,
                  "is too elongated: aspect ratio " + str(q.aspect_ratio) + " > " +
@@ -158,18 +163,22 @@ ElementQuality element_quality(const Mesh& mesh, int e) {
   ElementQuality q;
   q.area = element_area(mesh, e);
   q.min_scaled_jacobian = 1;
+  double min_jacobian = HUGE_VAL, max_jacobian = -HUGE_VAL;
   double shortest = HUGE_VAL, longest = 0;
   for (int k = 0; k < 4; ++k) {
     const Vector3d to_next = x[(k + 1) % 4] - x[k];
     const Vector3d to_prev = x[(k + 3) % 4] - x[k];
     const Vector3d& d = mesh.directors[el[k]];
     const double scale = to_next.norm() * to_prev.norm();
-    const double jacobian = scale > 0 ? to_next.cross(to_prev).dot(d) / scale : 0;
-    q.min_scaled_jacobian = std::min(q.min_scaled_jacobian, jacobian);
+    const double jacobian = to_next.cross(to_prev).dot(d);
+    min_jacobian = std::min(min_jacobian, jacobian);
+    max_jacobian = std::max(max_jacobian, jacobian);
+    q.min_scaled_jacobian = std::min(q.min_scaled_jacobian, scale > 0 ? jacobian / scale : 0);
     shortest = std::min(shortest, to_next.norm());
     longest = std::max(longest, to_next.norm());
     q.max_director_angle_deg = std::max(q.max_director_angle_deg, angle_deg(d, normal));
   }
+  q.jacobian_ratio = max_jacobian > 0 ? min_jacobian / max_jacobian : 0;
   q.aspect_ratio = shortest > 0 ? longest / shortest : HUGE_VAL;
   // Warp: fold angle across each diagonal; a planar quadrilateral has none.
   for (int k = 0; k < 2; ++k) {
@@ -204,10 +213,14 @@ void check_orientation_consistency(const Mesh& mesh) {
   }
 }
 
+void check_element(const Mesh& mesh, int e, const MeshQualityLimits& limits) {
+  check_connectivity(mesh, e);
+  check_shape(mesh, e, limits);
+}
+
 void check_mesh(const Mesh& mesh, const MeshQualityLimits& limits) {
   check_sizes_and_nodes(mesh, limits);
-  for (int e = 0; e < mesh.num_elements(); ++e) check_connectivity(mesh, e);
-  for (int e = 0; e < mesh.num_elements(); ++e) check_shape(mesh, e, limits);
+  for (int e = 0; e < mesh.num_elements(); ++e) check_element(mesh, e, limits);
   check_orientation_consistency(mesh);
   check_unused_nodes(mesh);
   if (!limits.allow_coincident_nodes) check_coincident_nodes(mesh, limits);

@@ -11,6 +11,11 @@ PointLocator::PointLocator(double tolerance) : tolerance_(tolerance) {
 }
 
 PointLocator::Cell PointLocator::cell_of(const Vector3d& p) const {
+  // Cell indices must fit a long long (and converting a larger double would be undefined).
+  if (!(p.cwiseAbs().maxCoeff() / tolerance_ < 1e15)) {
+    throw_input("a point is too far from the origin, or not finite, for a tolerance of " +
+                std::to_string(tolerance_));
+  }
   return {static_cast<long long>(std::floor(p.x() / tolerance_)),
           static_cast<long long>(std::floor(p.y() / tolerance_)),
           static_cast<long long>(std::floor(p.z() / tolerance_))};

@@ -87,6 +87,12 @@ TEST(GmshReader, RejectsInconsistentOrientation) {
                      {path + ":66:", "elements 12 (line 65) and 13", "inconsistent"});
 }
 
+TEST(GmshReader, NamesTheGmshElementOfABadQuadrangle) {
+  const std::string path = write_temp(replaced(fixture_text(), "13 8 12 7 4", "13 8 12 12 4"));
+  expect_input_error([&] { read_gmsh_msh4(path); },
+                     {path + ":66:", "repeats node", "[Gmsh element 13]"});
+}
+
 TEST(GmshReader, RejectsUndefinedNodesAndBadNumbers) {
   const std::string undefined = write_temp(replaced(fixture_text(), "13 8 12 7 4", "13 8 12 7 99"));
   expect_input_error([&] { read_gmsh_msh4(undefined); }, {":66:", "element 13", "node 99"});

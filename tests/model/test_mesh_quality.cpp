@@ -114,6 +114,11 @@ TEST(MeshQuality, RejectsDistortedElongatedAndWarpedElements) {
         check_mesh(single({{0, 0, 0}, {100, 0, 0}, {100, 1, 0}, {0, 1, 0}}));
       },
       {"element 0", "aspect ratio 100"});
+  // Strongly tapered: the corner Jacobians differ by a factor 33, no corner angle is small.
+  const Mesh tapered = single({{0, 0, 0}, {10, 0, 0}, {5.15, 1, 0}, {4.85, 1, 0}});
+  EXPECT_NEAR(element_quality(tapered, 0).jacobian_ratio, 0.03, 1e-12);
+  EXPECT_GT(element_quality(tapered, 0).min_scaled_jacobian, 0.05);
+  expect_input_error([&] { check_mesh(tapered); }, {"element 0", "Jacobian ratio 0.03"});
   // One corner lifted by the edge length: the two triangle halves meet at 60 deg.
   const Mesh warped = single({{0, 0, 0}, {1, 0, 0}, {1, 1, 1}, {0, 1, 0}});
   EXPECT_NEAR(element_quality(warped, 0).warp_deg, 60, 1e-12);
