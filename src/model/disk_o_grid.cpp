@@ -13,10 +13,18 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double target_size(const DiskGrading& g, double s) {
-  if (s <= g.refine_radius || g.refine_radius >= g.radius) return g.size_center;
-  const double t = (s - g.refine_radius) / (g.radius - g.refine_radius);
-  return g.size_center + t * (g.size_edge - g.size_center);
+// Radial elements are kept at most this many times longer than their tangential size.
+constexpr double kMaxRadialStretch = 4;
+
+// Target radial element size at distance s from the centre, with n tangential divisions per
+// 45-degree sector.
+double target_size(const DiskGrading& g, int n, double s) {
+  double size = g.size_center;
+  if (s > g.refine_radius && g.refine_radius < g.radius) {
+    const double t = (s - g.refine_radius) / (g.radius - g.refine_radius);
+    size += t * (g.size_edge - g.size_center);
+  }
+  return std::min(size, kMaxRadialStretch * kPi * s / (4 * n));
 }
 
 // Stations s0 = t_0 < ... < t_m = s1 with m = round(integral of ds/size) elements, placed so
@@ -55,7 +63,8 @@ Mesh quarter_disk(const DiskGrading& g) {
       std::max({1, static_cast<int>(std::ceil(kPi * r_refine / (4 * g.size_center) - 1e-9)),
                 static_cast<int>(std::ceil(kPi * g.radius / (4 * g.size_edge) - 1e-9))});
   const double a = std::min(n * g.size_center, 0.5 * g.radius);
-  const auto stations = graded_stations(a, g.radius, [&](double s) { return target_size(g, s); });
+  const auto stations =
+      graded_stations(a, g.radius, [&](double s) { return target_size(g, n, s); });
   const int m = static_cast<int>(stations.size()) - 1;
   const auto fraction = [&](int k) { return (stations[k] - a) / (g.radius - a); };
   const auto rim = [&](double angle) {
@@ -97,6 +106,13 @@ void validate(const DiskGrading& g) {
   if (!positive(g.size_edge) || g.size_edge > g.radius) {
     throw_input("the edge element size must be positive and at most the radius",
                 {"", "size_edge", std::to_string(g.size_edge)});
+  }
+  if (g.size_center > g.size_edge) {
+    throw_input(
+        "the O-grid refines towards the centre: the centre size must not exceed the "
+        "edge size (" +
+            std::to_string(g.size_edge) + ")",
+        {"", "size_center", std::to_string(g.size_center)});
   }
   if (!(std::isfinite(g.refine_radius) && g.refine_radius >= 0)) {
     throw_input("the refinement radius must be zero or positive",

@@ -8,9 +8,13 @@
 // joins three elements with 90/135/135 degree angles.
 //
 // Grading: the target element size is size_center up to refine_radius from the centre, then
-// grows linearly to size_edge at the rim. Radial node stations follow the target exactly (in
-// the sense of the integral of ds/size); the tangential size, fixed by n, is at most
-// size_center at refine_radius and at most size_edge at the rim. The square's half-side is
+// grows linearly to size_edge at the rim (size_center <= size_edge is required: the grid has no
+// tangential coarsening, so it refines towards the centre only). The number n of tangential
+// divisions per 45-degree sector is the smallest that makes the tangential size (pi r / 4n) at
+// most size_center at refine_radius and at most size_edge at the rim. Radial stations
+// equidistribute the target size along the sector's middle line (other radial lines are scaled
+// copies); the radial size is also capped at 4 times the local tangential size, so a very
+// coarse size_edge gives more rings rather than elongated elements. The square's half-side is
 // n * size_center, capped at half the radius.
 #pragma once
 
@@ -30,8 +34,8 @@ struct DiskGrading {
   double refine_radius = 0;  // mm, 0 <= refine_radius; beyond the radius the mesh is uniform
 };
 
-// Throws an input error unless sizes and radii are positive and finite and the sizes are at
-// most the radius.
+// Throws an input error unless sizes and radii are positive and finite, the sizes are at most
+// the radius and size_center <= size_edge.
 void validate(const DiskGrading& grading);
 
 // The disk in the plane z = 0 centred at the origin; node 0 is the centre. Nodes on the axes

@@ -31,6 +31,10 @@ void validate(const SphericalCapMeshSpec& spec) {
     throw_input("must be positive and at most the base radius",
                 {"", "size_edge", std::to_string(spec.size_edge)});
   }
+  if (spec.size_apex > spec.size_edge) {
+    throw_input("must not exceed size_edge: the mesh refines towards the apex",
+                {"", "size_apex", std::to_string(spec.size_apex)});
+  }
   if (!(std::isfinite(spec.refine_radius) && spec.refine_radius >= 0)) {
     throw_input("must be zero or positive",
                 {"", "refine_radius", std::to_string(spec.refine_radius)});

@@ -60,6 +60,18 @@ TEST(CircularPlateMesh, GradedQuarterModel) {
   EXPECT_EQ(full.node_sets.at("edge").size(), 4 * (quarter.node_sets.at("edge").size() - 1));
 }
 
+TEST(CircularPlateMesh, VeryCoarseEdgeSizeGivesMoreRingsNotElongatedElements) {
+  const Mesh mesh = circular_plate_mesh(25, 0.5, 10, 13, Symmetry::kQuarter);
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    ASSERT_LT(element_quality(mesh, e).aspect_ratio, 5) << "element " << e;
+  }
+}
+
+TEST(CircularPlateMesh, RejectsACoarserCentreThanEdge) {
+  expect_input_error([] { circular_plate_mesh(25, 2, 1, 13, Symmetry::kFull); },
+                     {"size_center", "must not exceed"});
+}
+
 TEST(MacNealHarderPatchMesh, NodesOfLinearMdAndFiveValidElements) {
   const Mesh mesh = macneal_harder_patch_mesh();
   ASSERT_EQ(mesh.num_nodes(), 8);

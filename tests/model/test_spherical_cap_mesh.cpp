@@ -146,6 +146,9 @@ TEST(SphericalCapMesh, RejectsImpossibleGeometryNamingTheField) {
   spec.size_apex = 0;
   expect_input_error([&] { spherical_cap_mesh(spec); }, {"size_apex"});
   spec = {};
+  spec.size_apex = 3;
+  expect_input_error([&] { spherical_cap_mesh(spec); }, {"size_apex", "must not exceed size_edge"});
+  spec = {};
   spec.refine_radius = -1;
   expect_input_error([&] { spherical_cap_mesh(spec); }, {"refine_radius"});
 }
