@@ -1,0 +1,147 @@
+#include "model/disk_o_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+
+#include "core/error.hpp"
+#include "model/structured_grid.hpp"
+
+namespace si {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Radial elements are kept at most this many times longer than their tangential size.
+constexpr double kMaxRadialStretch = 4;
+
+// Target radial element size at distance s from the centre, with n tangential divisions per
+// 45-degree sector.
+double target_size(const DiskGrading& g, int n, double s) {
+  double size = g.size_center;
+  if (s > g.refine_radius && g.refine_radius < g.radius) {
+    const double t = (s - g.refine_radius) / (g.radius - g.refine_radius);
+    size += t * (g.size_edge - g.size_center);
+  }
+  return std::min(size, kMaxRadialStretch * kPi * s / (4 * n));
+}
+
+// Stations s0 = t_0 < ... < t_m = s1 with m = round(integral of ds/size) elements, placed so
+// that each element holds the same share of that integral (equidistribution).
+std::vector<double> graded_stations(double s0, double s1,
+                                    const std::function<double(double)>& size) {
+  const int samples = 2000;
+  std::vector<double> s(samples + 1), count(samples + 1, 0.0);
+  for (int k = 0; k <= samples; ++k) s[k] = s0 + (s1 - s0) * k / samples;
+  for (int k = 1; k <= samples; ++k) {
+    count[k] = count[k - 1] + 0.5 * (1 / size(s[k - 1]) + 1 / size(s[k])) * (s[k] - s[k - 1]);
+  }
+  const int m = std::max(1, static_cast<int>(std::lround(count.back())));
+  std::vector<double> stations{s0};
+  int k = 1;
+  for (int i = 1; i < m; ++i) {
+    const double wanted = count.back() * i / m;
+    while (count[k] < wanted) ++k;
+    const double f = (wanted - count[k - 1]) / (count[k] - count[k - 1]);
+    stations.push_back(s[k - 1] + f * (s[k] - s[k - 1]));
+  }
+  stations.push_back(s1);
+  return stations;
+}
+
+// Points of a radial line from `inner` (on the square) to `outer` (on the circle), at the
+// fractions of the graded stations.
+Vector3d on_line(const Vector3d& inner, const Vector3d& outer, double fraction) {
+  return inner + fraction * (outer - inner);
+}
+
+Mesh quarter_disk(const DiskGrading& g) {
+  const double r_refine = std::min(g.refine_radius, g.radius);
+  // Tangential divisions per 45-degree sector: the arc length pi r / 4 over n is the size.
+  const int n =
+      std::max({1, static_cast<int>(std::ceil(kPi * r_refine / (4 * g.size_center) - 1e-9)),
+                static_cast<int>(std::ceil(kPi * g.radius / (4 * g.size_edge) - 1e-9))});
+  const double a = std::min(n * g.size_center, 0.5 * g.radius);
+  const auto stations =
+      graded_stations(a, g.radius, [&](double s) { return target_size(g, n, s); });
+  const int m = static_cast<int>(stations.size()) - 1;
+  const auto fraction = [&](int k) { return (stations[k] - a) / (g.radius - a); };
+  const auto rim = [&](double angle) {
+    return Vector3d(g.radius * std::cos(angle), g.radius * std::sin(angle), 0);
+  };
+
+  Mesh quarter =
+      structured_grid(n, n, [&](int i, int j) { return Vector3d(a * i / n, a * j / n, 0); });
+  // Sector 0..45 deg: from the side x = a; u radial, v counter-clockwise.
+  merge_into(quarter,
+             structured_grid(m, n,
+                             [&](int k, int i) {
+                               return on_line(Vector3d(a, a * i / n, 0), rim(kPi / 4 * i / n),
+                                              fraction(k));
+                             }),
+             1e-9 * g.radius);
+  // Sector 45..90 deg: from the side y = a.
+  merge_into(quarter,
+             structured_grid(m, n,
+                             [&](int k, int i) {
+                               return on_line(Vector3d(a * (n - i) / n, a, 0),
+                                              rim(kPi / 4 * (1 + static_cast<double>(i) / n)),
+                                              fraction(k));
+                             }),
+             1e-9 * g.radius);
+  return quarter;
+}
+
+}  // namespace
+
+void validate(const DiskGrading& g) {
+  const auto positive = [](double x) { return std::isfinite(x) && x > 0; };
+  if (!positive(g.radius))
+    throw_input("the disk radius must be positive", {"", "radius", std::to_string(g.radius)});
+  if (!positive(g.size_center) || g.size_center > g.radius) {
+    throw_input("the centre element size must be positive and at most the radius",
+                {"", "size_center", std::to_string(g.size_center)});
+  }
+  if (!positive(g.size_edge) || g.size_edge > g.radius) {
+    throw_input("the edge element size must be positive and at most the radius",
+                {"", "size_edge", std::to_string(g.size_edge)});
+  }
+  if (g.size_center > g.size_edge) {
+    throw_input(
+        "the O-grid refines towards the centre: the centre size must not exceed the "
+        "edge size (" +
+            std::to_string(g.size_edge) + ")",
+        {"", "size_center", std::to_string(g.size_center)});
+  }
+  if (!(std::isfinite(g.refine_radius) && g.refine_radius >= 0)) {
+    throw_input("the refinement radius must be zero or positive",
+                {"", "refine_radius", std::to_string(g.refine_radius)});
+  }
+}
+
+Mesh disk_o_grid(const DiskGrading& grading, Symmetry symmetry) {
+  validate(grading);
+  const Mesh quarter = quarter_disk(grading);
+  Mesh disk = quarter;
+  if (symmetry == Symmetry::kFull) {
+    for (int turn = 1; turn < 4; ++turn) {
+      const double angle = kPi / 2 * turn;
+      Mesh rotated = quarter;
+      for (Vector3d& p : rotated.nodes) {
+        p = Vector3d(std::cos(angle) * p.x() - std::sin(angle) * p.y(),
+                     std::sin(angle) * p.x() + std::cos(angle) * p.y(), 0);
+      }
+      merge_into(disk, rotated, 1e-9 * grading.radius);
+    }
+  }
+  // Round-off of the rotations and of cos(pi/2) must not move nodes off the symmetry axes.
+  for (Vector3d& p : disk.nodes) {
+    if (std::abs(p.x()) < 1e-12 * grading.radius) p.x() = 0;
+    if (std::abs(p.y()) < 1e-12 * grading.radius) p.y() = 0;
+  }
+  disk.directors.assign(disk.nodes.size(), Vector3d::UnitZ());
+  return disk;
+}
+
+}  // namespace si
