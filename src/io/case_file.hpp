@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "material/material.hpp"
+#include "model/symmetry.hpp"
 #include "section/laminate.hpp"
 
 namespace si {
@@ -32,7 +33,6 @@ struct ShellSpec {
 };
 
 enum class ElementType { kMitc4, kBernstein4 };
-enum class Symmetry { kFull, kQuarter };
 
 // Mesh size grades from size_apex at the indentation point to size_edge beyond refine_radius.
 struct MeshSpec {

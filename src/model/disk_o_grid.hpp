@@ -19,13 +19,9 @@
 #pragma once
 
 #include "model/mesh.hpp"
+#include "model/symmetry.hpp"
 
 namespace si {
-
-enum class Symmetry {
-  kFull,     // the whole disk
-  kQuarter,  // the part x >= 0, y >= 0
-};
 
 struct DiskGrading {
   double radius = 0;         // mm
