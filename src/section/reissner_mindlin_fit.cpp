@@ -50,14 +50,16 @@ struct FitProblem {
     return X;
   }
 
-  // The residual operator M(x) (12 x 12, symmetric).
-  Eigen::MatrixXd residual_operator(const Eigen::VectorXd& x) const {
+  // The part of the residual operator M(x) = H + coupling(x) that is linear in x (12 x 12,
+  // symmetric). Kept apart from H so that the Jacobian is built without cancellation: H is
+  // O(C h^3) while the c-terms are O(C h), and r(e_k) - r(0) would lose those digits.
+  Eigen::MatrixXd coupling(const Eigen::VectorXd& x) const {
     const Matrix2d X = X_of(x);
     std::array<ShearRelaxation, 2> c;
     for (int a = 0; a < 2; ++a)
       for (int r = 0; r < 2; ++r)
         for (int m = 0; m < 6; ++m) c[a](r, m) = x(3 + 12 * a + 6 * r + m);
-    Eigen::MatrixXd M = H;
+    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(12, 12);
     for (int a = 0; a < 2; ++a)
       for (int b = 0; b < 2; ++b) {
         M.block<6, 6>(6 * a, 6 * b) +=
@@ -74,9 +76,8 @@ struct FitProblem {
     return M;
   }
 
-  // The 78 weighted equations: upper triangle of M scaled by T_i T_j (vam.md 6.3).
-  Eigen::VectorXd residual(const Eigen::VectorXd& x) const {
-    const Eigen::MatrixXd M = residual_operator(x);
+  // The 78 weighted equations of a 12 x 12 operator: upper triangle scaled by T_i T_j (6.3).
+  Eigen::VectorXd equations(const Eigen::MatrixXd& M) const {
     const double t_kappa = std::sqrt(12.0) / thickness;
     auto weight = [t_kappa](int i) { return (i % 6) < 3 ? 1.0 : t_kappa; };
     Eigen::VectorXd r(78);
@@ -117,10 +118,11 @@ ReissnerMindlinFit fit_reissner_mindlin(const Matrix6d& A, const Eigen::MatrixXd
                                         bool compat) {
   const FitProblem problem{A, H, S, thickness, compat};
   const int n = problem.unknowns();
-  const Eigen::VectorXd r0 = problem.residual(Eigen::VectorXd::Zero(n));
-  // The residual is affine in x, so unit-vector differences give the exact Jacobian.
+  // r(x) = r0 + J x, with r0 the equations of H and column k of J those of coupling(e_k).
+  const Eigen::VectorXd r0 = problem.equations(H);
   Eigen::MatrixXd J(r0.size(), n);
-  for (int k = 0; k < n; ++k) J.col(k) = problem.residual(Eigen::VectorXd::Unit(n, k)) - r0;
+  for (int k = 0; k < n; ++k)
+    J.col(k) = problem.equations(problem.coupling(Eigen::VectorXd::Unit(n, k)));
 
   ReissnerMindlinFit fit;
   int rank = 0;

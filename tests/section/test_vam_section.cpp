@@ -274,6 +274,31 @@ TEST(VamSection, Vam_ResultsIndependentOfUnitSystem) {
   EXPECT_LT(relative_difference(m.c_L * 1e9, mm.c_L), 1e-12);
 }
 
+// Dimensional analysis: scaling every ply thickness by lambda scales A by lambda, B by lambda^2,
+// D by lambda^3, G by lambda and leaves Fbar_membrane/h, Fbar_bending/h^2 and c_L/h unchanged.
+// (A Jacobian built by differencing r(e_k) - r(0) lost the O(C h) columns against the O(C h^3)
+// gradient energy at h = 100 mm and changed G by 3 %; this guards the exact construction.)
+TEST(VamSection, Vam_ResultsScaleWithThickness) {
+  const std::vector<double> angles = {0, 90, 45, -45};
+  const VamSection reference = analyze_vam(stack(paper_material(), angles, 1.0));
+  for (double lambda : {1e-3, 0.475, 100.0}) {
+    const VamSection s = analyze_vam(stack(paper_material(), angles, lambda));
+    Matrix6d A = s.A_R;
+    A.topLeftCorner<3, 3>() /= lambda;
+    A.topRightCorner<3, 3>() /= lambda * lambda;
+    A.bottomLeftCorner<3, 3>() /= lambda * lambda;
+    A.bottomRightCorner<3, 3>() /= lambda * lambda * lambda;
+    EXPECT_LT(relative_difference(A, reference.A_R), 1e-12) << "lambda " << lambda;
+    EXPECT_LT(relative_difference(s.G / lambda, reference.G), 1e-10) << "lambda " << lambda;
+    Vector6d F = s.Fbar_top;
+    F.head<3>() /= lambda;
+    F.tail<3>() /= lambda * lambda;
+    EXPECT_LT(relative_difference(F, reference.Fbar_top), 1e-12) << "lambda " << lambda;
+    EXPECT_LT(relative_difference(s.c_L / lambda, reference.c_L), 1e-12) << "lambda " << lambda;
+    EXPECT_EQ(s.fit.rank, 26);
+  }
+}
+
 // vam.md 7.2 and 11.5 item 7: Fbar = -V0^T L (face w3 per unit strain) equals D_he^T V_L (the
 // resultants of the sigma33-induced in-plane stresses).
 TEST(VamSection, Vam_LoadCouplingComputedBothWaysAgrees) {
