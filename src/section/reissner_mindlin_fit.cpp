@@ -37,7 +37,6 @@ Eigen::Matrix<double, 2, 12> compatibility_operator() {
 
 struct FitProblem {
   Matrix6d A;
-  Eigen::MatrixXd H;
   std::array<ShearRelaxation, 2> S;
   double thickness;
   bool compat;
@@ -116,7 +115,7 @@ Eigen::VectorXd solve_least_squares(const Eigen::MatrixXd& J, const Eigen::Vecto
 ReissnerMindlinFit fit_reissner_mindlin(const Matrix6d& A, const Eigen::MatrixXd& H,
                                         const std::array<ShearRelaxation, 2>& S, double thickness,
                                         bool compat) {
-  const FitProblem problem{A, H, S, thickness, compat};
+  const FitProblem problem{A, S, thickness, compat};
   const int n = problem.unknowns();
   // r(x) = r0 + J x, with r0 the equations of H and column k of J those of coupling(e_k).
   const Eigen::VectorXd r0 = problem.equations(H);
