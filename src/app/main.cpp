@@ -4,6 +4,7 @@
 // Exit codes: 0 success, 2 bad input (including bad options), 1 numerical failure, 3 internal.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string>
 
 #include "app/section_command.hpp"
 #include "core/error.hpp"
@@ -42,16 +43,18 @@ int run(int argc, char** argv) {
   section->add_option("--material", so.material, "library material for --layup (see 'materials')")
       ->capture_default_str();
   section->add_option("--ply-thickness", so.ply_thickness, "thickness of every ply, with unit");
-  section->add_option("--reference", so.reference,
-                      "reference surface: mid, bottom, top or a length above the mid-surface")
+  section
+      ->add_option("--reference", so.reference,
+                   "reference surface: mid, bottom, top or a length above the mid-surface")
       ->capture_default_str();
   section->add_option("--json", so.json_path, "write the full result as JSON to this file");
   section->add_flag("--paper", so.paper,
                     "the source paper's lay-ups [theta/-theta]2S (theta = 0..90 by 15) and "
                     "[0/90]2S: table, CSV and JSON in --out");
   section->add_option("--out", so.out_dir, "output directory for --paper")->capture_default_str();
-  section->add_option("--vam-order", so.vam_order,
-                      "polynomial order of the through-thickness elements (>= 3 gives exact G)")
+  section
+      ->add_option("--vam-order", so.vam_order,
+                   "polynomial order of the through-thickness elements (>= 3 gives exact G)")
       ->capture_default_str();
 
   auto* materials = app.add_subcommand("materials", "List the built-in material library.");
@@ -61,6 +64,18 @@ int run(int argc, char** argv) {
       "layup", "Expand lay-up notation ply by ply (bottom to top) and print its compact form.");
   layup->add_option("notation", notation, "e.g. \"[0/+-45/90]s\"")->required();
 
+  // CLI11 would only say "a subcommand is required" for a mistyped command: name it instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string known;
+    bool found = false;
+    for (const auto* sub : app.get_subcommands({})) {
+      found = found || sub->get_name() == argv[1];
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!found)
+      throw si::Error(si::ErrorKind::kInput,
+                      std::string("unknown command '") + argv[1] + "' (commands: " + known + ")");
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -23,7 +23,8 @@ Where option_where(const char* option, const std::string& value) {
 Laminate laminate_from_notation(const std::string& notation, const Material& material,
                                 double ply_thickness) {
   Laminate lam;
-  for (double angle : parse_layup(notation)) lam.plies.push_back(Ply{material, ply_thickness, angle});
+  for (double angle : parse_layup(notation))
+    lam.plies.push_back(Ply{material, ply_thickness, angle});
   return lam;
 }
 
@@ -56,7 +57,8 @@ SectionProperties section_from_options(const SectionCommandOptions& o) {
   } catch (const Error& e) {
     throw e.within(option_where("--ply-thickness", o.ply_thickness));
   }
-  if (!(t > 0)) throw_input("ply thickness must be positive", option_where("--ply-thickness", o.ply_thickness));
+  if (!(t > 0))
+    throw_input("ply thickness must be positive", option_where("--ply-thickness", o.ply_thickness));
   Laminate lam;
   try {
     lam = laminate_from_notation(o.layup, material, t);
@@ -111,7 +113,8 @@ int run_paper(const SectionCommandOptions& o, std::ostream& out) {
 
 int run_section_command(const SectionCommandOptions& o, std::ostream& out) {
   if (o.vam_order < 2 || o.vam_order > 8)
-    throw_input("VAM element order must be between 2 and 8", option_where("--vam-order", std::to_string(o.vam_order)));
+    throw_input("VAM element order must be between 2 and 8",
+                option_where("--vam-order", std::to_string(o.vam_order)));
   if (o.paper) {
     if (!o.case_file.empty() || !o.layup.empty())
       throw_input("--paper takes no case file and no --layup", kCommandLine);
@@ -119,7 +122,8 @@ int run_section_command(const SectionCommandOptions& o, std::ostream& out) {
   }
   SectionProperties s = [&] {
     if (!o.case_file.empty()) {
-      if (!o.layup.empty()) throw_input("give either a case file or --layup, not both", kCommandLine);
+      if (!o.layup.empty())
+        throw_input("give either a case file or --layup, not both", kCommandLine);
       const CaseFile c = read_case_file(o.case_file);
       return analyze_section(c.laminate, describe_laminate(c.laminate), VamOptions{o.vam_order, 1});
     }

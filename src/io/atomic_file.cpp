@@ -15,7 +15,9 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   std::error_code ec;
   if (target.has_parent_path()) {
     fs::create_directories(target.parent_path(), ec);
-    if (ec) throw_input("cannot create directory '" + target.parent_path().string() + "': " + ec.message());
+    if (ec)
+      throw_input("cannot create directory '" + target.parent_path().string() +
+                  "': " + ec.message());
   }
   const fs::path tmp = target.string() + ".tmp";
   {

@@ -108,8 +108,7 @@ nlohmann::json section_to_json(const SectionProperties& s) {
       {"plies_bottom_to_top", plies},
       {"thickness_mm", lam.thickness()},
       {"reference_offset_mm", lam.reference_offset},
-      {"ordering",
-       {{"strains", "[e11, 2e12, e22, k11, k12+k21, k22]"}, {"shear", "[2g13, 2g23]"}}},
+      {"ordering", {{"strains", "[e11, 2e12, e22, k11, k12+k21, k22]"}, {"shear", "[2g13, 2g23]"}}},
       {"units",
        {{"A", "N/mm"},
         {"B", "N"},
@@ -190,11 +189,10 @@ void print_section_table(std::ostream& os, const std::vector<SectionProperties>&
         "   G11(N/mm)   G22(N/mm)   G12(N/mm)  Fbar+k11(mm2/MPa)\n";
   for (const auto& s : sections) {
     char line[256];
-    std::snprintf(line, sizeof line,
-                  "%-14s %11.5g %11.5g %11.5g %11.5g %11.5g %11.5g %11.5g %11.4g %12.6g\n",
-                  s.label.c_str(), s.vam.A_R(3, 3), s.vam.A_R(5, 5), s.vam.A_R(3, 5),
-                  s.vam.A_R(4, 4), s.vam.A_R(3, 4), s.vam.G(0, 0), s.vam.G(1, 1), s.vam.G(0, 1),
-                  s.vam.Fbar_top(3));
+    std::snprintf(
+        line, sizeof line, "%-14s %11.5g %11.5g %11.5g %11.5g %11.5g %11.5g %11.5g %11.4g %12.6g\n",
+        s.label.c_str(), s.vam.A_R(3, 3), s.vam.A_R(5, 5), s.vam.A_R(3, 5), s.vam.A_R(4, 4),
+        s.vam.A_R(3, 4), s.vam.G(0, 0), s.vam.G(1, 1), s.vam.G(0, 1), s.vam.Fbar_top(3));
     os << line;
   }
 }

@@ -2,6 +2,7 @@
 // naming the option and value, --help, and that failed runs write no result files.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -9,7 +10,6 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
@@ -74,8 +74,7 @@ TEST(Cli, SectionJsonIsCompleteAndSymmetric) {
   const auto& a = j.at("vam").at("A_R");
   ASSERT_EQ(a.size(), 6u);
   for (int i = 0; i < 6; ++i)
-    for (int k = 0; k < 6; ++k)
-      EXPECT_DOUBLE_EQ(a[i][k].get<double>(), a[k][i].get<double>());
+    for (int k = 0; k < 6; ++k) EXPECT_DOUBLE_EQ(a[i][k].get<double>(), a[k][i].get<double>());
   EXPECT_EQ(j.at("plies_bottom_to_top").size(), 8u);
   EXPECT_NEAR(j.at("thickness_mm").get<double>(), 3.8, 1e-12);
 }
@@ -109,8 +108,8 @@ TEST(Cli, BadOptionValuesExitTwoNamingOptionAndValue) {
 TEST(Cli, FailedRunWritesNoResultFile) {
   const fs::path dir = fresh_dir("nohalf");
   const fs::path json = dir / "s.json";
-  const auto r = run_cli("section --layup '[0/90]S' --ply-thickness 0.475 --json '" +
-                         json.string() + "'");
+  const auto r =
+      run_cli("section --layup '[0/90]S' --ply-thickness 0.475 --json '" + json.string() + "'");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_FALSE(fs::exists(json));
   EXPECT_TRUE(fs::is_empty(dir));
