@@ -1,6 +1,7 @@
 #include "shell/quad4_shell.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <utility>
 
 #include "core/error.hpp"
@@ -17,6 +18,13 @@ using Matrix3x2d = Eigen::Matrix<double, 3, 2>;
 using RotationBases = std::array<Matrix3x2d, 4>;  // delta d_I = T_I (a_I, b_I), T_I = [-v2, v1]
 
 // Mid-surface quantities at one parametric point (a = xi, eta).
+std::string number(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << v;
+  return s.str();
+}
+
 struct PointKinematics {
   Shape4 shape;
   std::array<Vector3d, 2> X_a, x_a, D_a, d_a;
@@ -119,12 +127,12 @@ LocalFrame local_frame(const PointKinematics& p, const Vector3d& material_axis) 
   const double scale = p.X_a[0].squaredNorm() + p.X_a[1].squaredNorm();
   if (!(f.area > 1e-10 * scale))
     throw_input("degenerate shell element: zero-area mid-surface (|X,xi x X,eta| = " +
-                std::to_string(f.area) + ")");
+                number(f.area) + " at a Gauss point)");
   Vector3d n = normal / f.area;
   const double cos_dn = p.D.dot(n) / p.D.norm();
   if (!(std::abs(cos_dn) > 0.1))
     throw_input("degenerate shell element: director nearly tangent to the mid-surface (cos = " +
-                std::to_string(cos_dn) + ", must exceed 0.1)");
+                number(cos_dn) + " between director and normal; |cos| must exceed 0.1)");
   if (cos_dn < 0) n = -n;
   Vector3d t1 = material_axis - material_axis.dot(n) * n;
   t1 = t1.norm() > 1e-8 * material_axis.norm() ? t1.normalized() : p.X_a[0].normalized();
