@@ -298,7 +298,8 @@ void Quad4Shell::compute_at_state(const ElementGeometry& geometry,
       response.energy += 0.5 * p.E.dot(S) * dA;
       if (request.force) response.force.noalias() += dA * p.B.transpose() * S;
       if (request.tangent) {
-        response.tangent.noalias() += dA * p.B.transpose() * (C * p.B);
+        const Matrix8x20d CB = dA * C * p.B;
+        response.tangent.noalias() += p.B.transpose().lazyProduct(CB);
         element.add_geometric(rule.x[i], rule.x[j], p.kin, dA * p.frame.L.transpose() * S,
                               response.tangent);
       }

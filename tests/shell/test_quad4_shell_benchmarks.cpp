@@ -175,3 +175,45 @@ TEST(Mitc4Locking, ClampedSquarePlate_TimoshenkoTable35_0_00126532) {
 
 }  // namespace
 }  // namespace si
+
+namespace si {
+namespace {
+
+// The paper's element (Bernstein shapes, eqs 68-71) measured: a rigid translation strains it
+// (sum N_I != 1), and it fails the MacNeal-Harder membrane patch test by a large margin. These
+// are recorded defects, not targets: the assertions only check that the defects are present.
+TEST(Bernstein4Defects, RigidTranslationHasStrainEnergy) {
+  const auto element = make_shell_element("bernstein4");
+  const ShellLaw law = isotropic_shell_law(kPatchE, kPatchNu, kPatchT);
+  ElementGeometry g;
+  g.X = {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, 0)};
+  for (auto& D : g.D) D = Vector3d::UnitZ();
+  std::array<NodeState, 4> s;
+  for (int i = 0; i < 4; ++i) {
+    s[i] = reference_node_state(g.D[i]);
+    s[i].u = Vector3d(1e-3, 0, 0);  // rigid translation by 1e-3 along x
+  }
+  for (Kinematics kin : {Kinematics::kLinear, Kinematics::kNonlinear}) {
+    ElementResponse r;
+    element->compute(g, s, law, kin, {}, r);
+    // Reference: energy of a uniform membrane strain of 1e-3 over the same element.
+    const double uniform = 0.5 * 1e-6 * law.A_R(0, 0) * 1.0;
+    std::cout << "bernstein4 rigid translation 1e-3 (unit square, "
+              << (kin == Kinematics::kLinear ? "linear" : "nonlinear") << "): energy " << r.energy
+              << " = " << r.energy / uniform << " x energy of a uniform strain 1e-3\n";
+    EXPECT_GT(r.energy, 1e-3 * uniform);
+  }
+}
+
+TEST(Bernstein4Defects, FailsMacNealHarderMembranePatch) {
+  Vector6d R_exact;
+  R_exact << 1e-3, 1e-3, 1e-3, 0, 0, 0;
+  const PatchResult r = run_patch("bernstein4", membrane_field, R_exact);
+  std::cout << "bernstein4 membrane patch: dof error " << r.dof_error << ", strain error "
+            << r.strain_error << "\n";
+  EXPECT_GT(r.dof_error, 1e-2);
+  EXPECT_GT(r.strain_error, 1e-2);
+}
+
+}  // namespace
+}  // namespace si
