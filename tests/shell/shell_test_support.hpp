@@ -69,6 +69,27 @@ inline Eigen::MatrixXd assemble_linear_stiffness(const ShellElement& element, co
   return K;
 }
 
+// Dense tangent and internal force (nonlinear mode) at the given node states.
+inline void assemble_nonlinear(const ShellElement& element, const ShellMesh& mesh,
+                               const std::vector<NodeState>& states, const ShellLaw& law,
+                               Eigen::MatrixXd& K, Eigen::VectorXd& f) {
+  K = Eigen::MatrixXd::Zero(mesh.dofs(), mesh.dofs());
+  f = Eigen::VectorXd::Zero(mesh.dofs());
+  ElementResponse r;
+  for (size_t e = 0; e < mesh.quads.size(); ++e) {
+    const int ei = static_cast<int>(e);
+    element.compute(mesh.geometry(ei), element_states(mesh, states, ei), law,
+                    Kinematics::kNonlinear, {}, r);
+    for (int a = 0; a < 4; ++a) {
+      const int ga = kShellNodeDofs * mesh.quads[e][a];
+      f.segment<kShellNodeDofs>(ga) += r.force.segment<kShellNodeDofs>(kShellNodeDofs * a);
+      for (int b = 0; b < 4; ++b)
+        K.block<kShellNodeDofs, kShellNodeDofs>(ga, kShellNodeDofs * mesh.quads[e][b]) +=
+            r.tangent.block<kShellNodeDofs, kShellNodeDofs>(kShellNodeDofs * a, kShellNodeDofs * b);
+    }
+  }
+}
+
 // Solves K q = f with q(dof) = value for the prescribed dofs.
 inline Eigen::VectorXd solve_dirichlet(const Eigen::MatrixXd& K, const Eigen::VectorXd& f,
                                        const std::map<int, double>& prescribed) {
