@@ -1,5 +1,5 @@
 // Nodal director frames of the degenerated shell (paper eqs 36-39, Fig. 3; Bathe, "Finite
-// Element Procedures", 1996, sec. 5.4.2). Each node carries a unit director d and two unit axes
+// Element Procedures", 1996, sec. 5.4). Each node carries a unit director d and two unit axes
 // v1, v2 with (v1, v2, d) right-handed orthonormal; its two rotational dofs are rotations about
 // the CURRENT v1 and v2. A rotation increment theta = a v1 + b v2 changes the director by
 // delta d = theta x d = -a v2 + b v1, i.e. the paper's R_i = [-v2, v1] (eq 39).
@@ -17,7 +17,7 @@ struct NodeState {
 };
 
 // Reference frame of a node with reference director D (normalised here; |D| must be 1 within
-// 1e-6, else an input error):  V1 = (e2 x D) / |e2 x D|, V2 = D x V1 (Bathe, sec. 5.4.2, the
+// 1e-6, else an input error):  V1 = (e2 x D) / |e2 x D|, V2 = D x V1 (Bathe, sec. 5.4, the
 // construction the paper's Fig. 3 flowchart encodes; the figure itself is not in the paper's
 // text). If D is parallel to e2 (|e2 x D| < 1e-8) then V1 = e3 (Bathe's rule), giving
 // V2 = D x e3. u = 0.

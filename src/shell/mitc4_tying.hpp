@@ -1,4 +1,4 @@
-// MITC4 assumed transverse shear strain (Dvorkin & Bathe 1984, eqs 8-9; Bathe 1996, sec. 5.4.2):
+// MITC4 assumed transverse shear strain (Dvorkin & Bathe 1984; Bathe 1996, sec. 5.4):
 // the covariant shear gamma_xi is sampled at A = (0,-1) and C = (0,1), gamma_eta at D = (-1,0)
 // and B = (1,0), and interpolated linearly:
 //   gamma_xi  = (1 - eta)/2 gamma_xi^A  + (1 + eta)/2 gamma_xi^C

@@ -52,7 +52,8 @@ PointKinematics point_kinematics(ShapeSet set, const ElementGeometry& g,
   return p;
 }
 
-// Covariant strains (Simo & Fox 1989, eqs 4.5-4.7 specialised to the mid-surface).
+// Covariant strains of the first-order kinematics (Simo & Fox 1989, Part I: membrane, bending
+// and transverse shear measures of the stress-resultant shell; quad4_shell.hpp).
 Vector8d covariant_strains(const PointKinematics& p) {
   const auto& x = p.x_a;
   const auto& X = p.X_a;

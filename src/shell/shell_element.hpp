@@ -63,7 +63,10 @@ struct ElementStrains {
 // rotation vector theta that takes the reference director D to d (the exact inverse of
 // rotate_node applied to reference_node_state(D), |theta| < pi); its components on the REFERENCE
 // axes V1, V2 are the rotational dofs. Force = K0 q, energy = 1/2 q^T K0 q, tangent = K0 (the
-// nonlinear tangent at the reference state), with q = (u, theta.V1, theta.V2) per node.
+// nonlinear tangent at the reference state), with q = (u, theta.V1, theta.V2) per node. A linear
+// solver should therefore set d with ONE rotate_node(reference_node_state(D), a, b) call per
+// solution: (a, b) are then recovered exactly; composing several rotate_node calls changes q at
+// second order in the rotations.
 class ShellElement {
  public:
   virtual ~ShellElement() = default;

@@ -9,7 +9,7 @@
 namespace si {
 namespace {
 
-// Bathe (1996) sec. 5.4.2: V1 = e2 x D / |e2 x D|, V2 = D x V1; V1 = e3 when D || e2.
+// Bathe (1996) sec. 5.4: V1 = e2 x D / |e2 x D|, V2 = D x V1; V1 = e3 when D || e2.
 TEST(Director, ReferenceFrameFollowsBathe) {
   const NodeState flat = reference_node_state(Vector3d::UnitZ());
   EXPECT_NEAR((flat.v1 - Vector3d::UnitX()).norm(), 0, 1e-15);
