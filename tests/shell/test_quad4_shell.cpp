@@ -205,6 +205,25 @@ TEST(Mitc4Shell, FreeFlatElementHasSixRigidModes) {
   EXPECT_GT(l(6) / scale, 1e-6);  // the smallest bending mode, ~ (t/L)^2 times the membrane
 }
 
+// t1 = projection of material_axis on the tangent plane; an axis along the normal falls back to
+// X,xi. On a flat square aligned with x: e1 + 0.5 e3 and e3 give the same stiffness as e1, while
+// e2 (the laminate turned by 90 deg) changes it for an anisotropic law.
+TEST(Mitc4Shell, MaterialAxisIsProjectedOnTheTangentPlane) {
+  const auto element = make_shell_element("mitc4");
+  const ShellLaw law = coupled_law();
+  ElementGeometry g;
+  g.X = {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, 0)};
+  for (auto& D : g.D) D = Vector3d::UnitZ();
+  auto stiffness = [&](const Vector3d& axis) {
+    g.material_axis = axis;
+    return compute(*element, g, reference_nodes(g), law, Kinematics::kLinear).tangent;
+  };
+  const Matrix20d K = stiffness(Vector3d::UnitX());
+  EXPECT_LT((stiffness(Vector3d(1, 0, 0.5)) - K).norm(), 1e-14 * K.norm());
+  EXPECT_LT((stiffness(Vector3d::UnitZ()) - K).norm(), 1e-14 * K.norm());
+  EXPECT_GT((stiffness(Vector3d::UnitY()) - K).norm(), 1e-3 * K.norm());
+}
+
 TEST(ShellElementFactory, RejectsUnknownNamesListingKnownOnes) {
   EXPECT_EQ(make_shell_element("mitc4")->name(), "mitc4");
   EXPECT_EQ(make_shell_element("bernstein4")->name(), "bernstein4");
