@@ -13,6 +13,7 @@
 #include "material/material.hpp"
 #include "model/symmetry.hpp"
 #include "section/laminate.hpp"
+#include "shell/kinematics.hpp"
 
 namespace si {
 
@@ -42,8 +43,6 @@ struct MeshSpec {
   double refine_radius = 13.0;  // mm, measured from the indentation point in plan
   Symmetry symmetry = Symmetry::kFull;
 };
-
-enum class Kinematics { kLinear, kNonlinear };
 
 enum class IndenterShape { kSphere, kSuperquadric, kFlatPunch, kCylinder };
 
