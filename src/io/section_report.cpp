@@ -1,5 +1,6 @@
 #include "io/section_report.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -7,6 +8,12 @@ namespace si {
 namespace {
 
 constexpr const char* kRowNames[3] = {"11", "12", "22"};
+
+// Entries below 1e-12 of their matrix's scale are round-off of exact zeros (e.g. D16 of a
+// cross-ply stack); printing them as 0 keeps the report readable. JSON keeps the raw values.
+double clean(double v, double scale) {
+  return std::abs(v) < 1e-12 * scale ? 0.0 : v;
+}
 
 std::string fmt(double v, const char* spec = "%13.6g") {
   char buf[64];
@@ -19,19 +26,20 @@ void print_block(std::ostream& os, const char* title, const Matrix6d& m, int r0,
   os << "  " << title << "\n";
   for (int i = 0; i < 3; ++i) {
     os << "    " << kRowNames[i] << " ";
-    for (int j = 0; j < 3; ++j) os << fmt(m(r0 + i, c0 + j));
+    for (int j = 0; j < 3; ++j) os << fmt(clean(m(r0 + i, c0 + j), m.cwiseAbs().maxCoeff()));
     os << "\n";
   }
 }
 
 void print_matrix2(std::ostream& os, const char* title, const Matrix2d& m) {
-  os << "  " << title << fmt(m(0, 0)) << fmt(m(0, 1)) << " |" << fmt(m(1, 0)) << fmt(m(1, 1))
-     << "\n";
+  const double scale = m.cwiseAbs().maxCoeff();
+  os << "  " << title << fmt(clean(m(0, 0), scale)) << fmt(clean(m(0, 1), scale)) << " |"
+     << fmt(clean(m(1, 0), scale)) << fmt(clean(m(1, 1), scale)) << "\n";
 }
 
 void print_vector6(std::ostream& os, const char* title, const Vector6d& v) {
   os << "  " << title;
-  for (int i = 0; i < 6; ++i) os << fmt(v(i), "%12.6g");
+  for (int i = 0; i < 6; ++i) os << fmt(clean(v(i), v.cwiseAbs().maxCoeff()), "%12.6g");
   os << "\n";
 }
 
@@ -57,7 +65,8 @@ void print_plies(std::ostream& os, const Laminate& lam) {
     const auto& p = lam.plies[k];
     char line[200];
     std::snprintf(line, sizeof line, "  %3zu  %-22s %11.4g %14.6g %14.6g %11.6g\n", k + 1,
-                  p.material.name().c_str(), p.angle_deg, p.thickness, z[k], z[k + 1]);
+                  p.material.name().c_str(), p.angle_deg, p.thickness, clean(z[k], z.back()),
+                  clean(z[k + 1], z.back()));
     os << line;
   }
 }
@@ -86,7 +95,7 @@ void print_section_report(std::ostream& os, const SectionProperties& s) {
      << s.vam.fit.rank << " of " << s.vam.fit.unknowns << " unknowns\n";
 
   os << "\nLoad coupling F-bar per unit normal face traction (t along +x3; an indenter pressure p\n"
-        "on the top face is t+ = -p), units [mm mm mm mm^2 mm^2 mm^2]/MPa:\n";
+        "on the top face is t+ = -p), units [mm mm mm mm^2 mm^2 mm^2]; F = t F-bar in [N/mm, N]:\n";
   print_vector6(os, "F-bar top    ", s.vam.Fbar_top);
   print_vector6(os, "F-bar bottom ", s.vam.Fbar_bottom);
   os << "Face compliance c_L (mm/MPa): c++ = " << fmt(s.vam.c_L(0, 0), "%.6g")
@@ -114,7 +123,7 @@ nlohmann::json section_to_json(const SectionProperties& s) {
         {"B", "N"},
         {"D", "N*mm"},
         {"G", "N/mm"},
-        {"Fbar", "[mm, mm, mm, mm^2, mm^2, mm^2] per MPa"},
+        {"Fbar", "[mm, mm, mm, mm^2, mm^2, mm^2]; F = t Fbar with t in MPa"},
         {"c_L", "mm/MPa"}}},
       {"clt",
        {{"A", to_json_matrix(abd.block<3, 3>(0, 0))},
@@ -189,10 +198,11 @@ void print_section_table(std::ostream& os, const std::vector<SectionProperties>&
         "   G11(N/mm)   G22(N/mm)   G12(N/mm)  Fbar+k11(mm2/MPa)\n";
   for (const auto& s : sections) {
     char line[256];
-    std::snprintf(
-        line, sizeof line, "%-14s %11.5g %11.5g %11.5g %11.5g %11.5g %11.5g %11.5g %11.4g %12.6g\n",
-        s.label.c_str(), s.vam.A_R(3, 3), s.vam.A_R(5, 5), s.vam.A_R(3, 5), s.vam.A_R(4, 4),
-        s.vam.A_R(3, 4), s.vam.G(0, 0), s.vam.G(1, 1), s.vam.G(0, 1), s.vam.Fbar_top(3));
+    std::snprintf(line, sizeof line,
+                  "%-14s %11.5g %11.5g %11.5g %11.5g %11.5g %11.5g %11.5g %11.4g %12.6g\n",
+                  s.label.c_str(), s.vam.A_R(3, 3), s.vam.A_R(5, 5), s.vam.A_R(3, 5),
+                  s.vam.A_R(4, 4), clean(s.vam.A_R(3, 4), s.vam.A_R(3, 3)), s.vam.G(0, 0),
+                  s.vam.G(1, 1), clean(s.vam.G(0, 1), s.vam.G(0, 0)), s.vam.Fbar_top(3));
     os << line;
   }
 }

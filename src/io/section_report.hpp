@@ -1,6 +1,6 @@
 // Human-readable and machine-readable reports of a section analysis. Units are printed with
 // every matrix: A in N/mm, B in N, D in N*mm, G in N/mm, F-bar in mm (membrane) and mm^2
-// (bending) per MPa of face traction, c_L in mm/MPa.
+// (bending), so that F = t F-bar for a face traction t in MPa, c_L in mm/MPa.
 #pragma once
 
 #include <nlohmann/json.hpp>
