@@ -19,6 +19,11 @@
 
 namespace si::testing {
 
+// The spring net ignores the section law; this is a zero one to pass to the API.
+inline ShellLaw unused_law() {
+  return ShellLaw{Matrix6d::Zero(), Matrix2d::Zero()};
+}
+
 class SpringNetElement : public ShellElement {
  public:
   SpringNetElement(double k = 1000.0, double g = 500.0, double c = 100.0) : k_(k), g_(g), c_(c) {}
