@@ -142,13 +142,13 @@ void Assembler::assemble(const std::vector<NodeState>& state, const ElementReque
   std::vector<double> energy(mesh_.num_elements(), 0.0);
   const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
 
-  for (int c = 0; c < num_colours(); ++c) {
-    const int begin = colour_start_[c], end = colour_start_[c + 1];
-#pragma omp parallel num_threads(threads)
-    {
-      ElementResponse response;  // this thread's buffer
+  // One parallel region; the implicit barrier after each colour's loop keeps colours apart.
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    ElementResponse response;  // this thread's buffer
+    for (int c = 0; c < num_colours(); ++c) {
 #pragma omp for schedule(static)
-      for (int k = begin; k < end; ++k) {
+      for (int k = colour_start_[c]; k < colour_start_[c + 1]; ++k) {
         const int e = colour_order_[k];
         element_.compute(geometry_[e], element_states(state, e), law_, kinematics_, request,
                          response);
