@@ -13,8 +13,10 @@ namespace si {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-// Below this pivot-ratio estimate a matrix is treated as singular: 1e-14 is about 50 machine
-// epsilons; a free rigid-body mode gives 1e-16 or less (measured in tests/model).
+// Below this pivot-ratio estimate (min/max pivot) a matrix is treated as singular: 1e-14 is about
+// 50 machine epsilons. Measured on a free 6x6 spring net (tests/model): UMFPACK's estimate is
+// 3.6e-16 and it does not flag the matrix itself; CHOLMOD reports "not positive definite".
+// A well-supported but very thin shell has pivot ratios of order (t/L)^2 (h/L)^2, far above.
 constexpr double kSingularRcond = 1e-14;
 
 class LinearSolver {

@@ -44,7 +44,8 @@ StaticSolver::StaticSolver(const Mesh& mesh, const DofMap& dofs, const ShellElem
       dofs_(dofs),
       loads_(std::move(loads)),
       settings_(std::move(settings)),
-      assembler_(mesh, dofs, element, std::move(law), kinematics, threads) {
+      assembler_(mesh, dofs, element, std::move(law), kinematics, threads),
+      assembly_(assembler_.make_assembly()) {
   settings_.validate();
   for (int n : settings_.record_nodes)
     if (n < 0 || n >= mesh.num_nodes())
@@ -119,7 +120,7 @@ void StaticSolver::finish_step(const std::vector<NodeState>& state, double lambd
 
 void StaticSolver::solve_linear(std::vector<NodeState>& state, const StepCallback& callback) {
   const std::vector<NodeState> reference = reference_state(mesh_);
-  Assembly assembly = assembler_.make_assembly();
+  Assembly& assembly = assembly_;
   assembler_.assemble(reference, ElementRequest{false, true}, assembly);
   solver_->analyze(assembly.tangent);
   try {
@@ -162,7 +163,7 @@ void StaticSolver::solve_linear(std::vector<NodeState>& state, const StepCallbac
 StaticSolver::Attempt StaticSolver::newton(std::vector<NodeState>& state, double lambda,
                                            StepResult& result) {
   set_prescribed(state, lambda);
-  Assembly assembly = assembler_.make_assembly();
+  Assembly& assembly = assembly_;
   double energy0 = 0, energy_ratio = 1;
   for (int k = 0;; ++k) {
     assembler_.assemble(state, ElementRequest{true, true}, assembly);

@@ -92,6 +92,7 @@ class StaticSolver {
   Loads loads_;
   StaticSettings settings_;
   Assembler assembler_;
+  Assembly assembly_;  // reused by every assembly (the tangent's pattern is allocated once)
   Eigen::VectorXd fixed_load_;
   std::unique_ptr<LinearSolver> solver_;
   std::vector<StepResult> steps_;

@@ -212,6 +212,22 @@ TEST(StaticSolver, LinearModeSolvesOnceAndScalesWithTheLoad) {
   EXPECT_LT((u_nl - u_lin).norm(), 2e-2 * u_lin.norm()) << (u_nl - u_lin).norm() / u_lin.norm();
 }
 
+// In linear mode a follower pressure is a dead pressure (reference positions).
+TEST(StaticSolver, LinearModeTreatsFollowerPressureAsDead) {
+  const Cantilever c;
+  Loads dead, follower;
+  dead.pressures.push_back({0.05, false, {}});
+  follower.pressures.push_back({0.05, true, {}});
+  std::vector<NodeState> s1 = reference_state(c.mesh), s2 = s1;
+  StaticSolver a(c.mesh, c.dofs, c.element, unused_law(), Kinematics::kLinear, dead, c.settings(1));
+  StaticSolver b(c.mesh, c.dofs, c.element, unused_law(), Kinematics::kLinear, follower,
+                 c.settings(1));
+  const Vector3d ua = a.solve(s1).back().displacements[0];
+  const Vector3d ub = b.solve(s2).back().displacements[0];
+  EXPECT_GT(ua.z(), 1e-4);
+  EXPECT_LT((ua - ub).norm(), 1e-12 * ua.norm());
+}
+
 // Displacement control: the right edge is pulled up by a prescribed u3; no applied loads, so the
 // reactions at the two edges balance each other.
 TEST(StaticSolver, PrescribedDisplacementScalesWithTheLoadFactor) {
