@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <exception>
 #include <utility>
 
 #include "core/error.hpp"
@@ -132,6 +133,17 @@ void Assembler::add_element_block(int element, const Eigen::Matrix<double, 20, 2
       if (slot[20 * i + j] >= 0) values[slot[20 * i + j]] += scale * block(i, j);
 }
 
+void Assembler::compute_and_scatter(int e, const std::vector<NodeState>& state,
+                                    const ElementRequest& request, ElementResponse& response,
+                                    std::vector<double>& energy, Assembly& out) const {
+  element_.compute(geometry_[e], element_states(state, e), law_, kinematics_, request, response);
+  energy[e] = response.energy;
+  if (request.force)
+    DofMap::scatter_add(DofMap::element_dofs(mesh_.elements[e]), response.force,
+                        out.internal_force);
+  if (request.tangent) add_element_block(e, response.tangent, 1.0, out.tangent);
+}
+
 void Assembler::assemble(const std::vector<NodeState>& state, const ElementRequest& request,
                          Assembly& out) const {
   SI_REQUIRE(static_cast<int>(state.size()) == mesh_.num_nodes(),
@@ -143,23 +155,32 @@ void Assembler::assemble(const std::vector<NodeState>& state, const ElementReque
   const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
 
   // One parallel region; the implicit barrier after each colour's loop keeps colours apart.
+  // An exception must not leave an OpenMP region (std::terminate): the first one is kept and
+  // rethrown after the region; the other threads skip their remaining elements.
+  std::exception_ptr failure;
+  bool failed = false;
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
     ElementResponse response;  // this thread's buffer
     for (int c = 0; c < num_colours(); ++c) {
 #pragma omp for schedule(static)
       for (int k = colour_start_[c]; k < colour_start_[c + 1]; ++k) {
-        const int e = colour_order_[k];
-        element_.compute(geometry_[e], element_states(state, e), law_, kinematics_, request,
-                         response);
-        energy[e] = response.energy;
-        if (request.force)
-          DofMap::scatter_add(DofMap::element_dofs(mesh_.elements[e]), response.force,
-                              out.internal_force);
-        if (request.tangent) add_element_block(e, response.tangent, 1.0, out.tangent);
+        bool skip;
+#pragma omp atomic read
+        skip = failed;
+        if (skip) continue;
+        try {
+          compute_and_scatter(colour_order_[k], state, request, response, energy, out);
+        } catch (...) {
+#pragma omp critical(si_assembly_failure)
+          if (!failure) failure = std::current_exception();
+#pragma omp atomic write
+          failed = true;
+        }
       }
     }
   }
+  if (failure) std::rethrow_exception(failure);
   out.energy = 0;
   for (double w : energy) out.energy += w;
 }

@@ -42,7 +42,8 @@ class Assembler {
   Assembly make_assembly() const;
 
   // Computes what `request` asks for at `state` (one NodeState per node) into `out`, which must
-  // come from make_assembly(). The energy is always computed.
+  // come from make_assembly(). The energy is always computed. An element's exception is
+  // rethrown (after the parallel region); `out` is then incomplete.
   void assemble(const std::vector<NodeState>& state, const ElementRequest& request,
                 Assembly& out) const;
 
@@ -59,6 +60,9 @@ class Assembler {
  private:
   void build_pattern();
   void colour_elements();
+  void compute_and_scatter(int element, const std::vector<NodeState>& state,
+                           const ElementRequest& request, ElementResponse& response,
+                           std::vector<double>& energy, Assembly& out) const;
 
   const Mesh& mesh_;
   const DofMap& dofs_;

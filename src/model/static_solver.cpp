@@ -87,7 +87,7 @@ Eigen::VectorXd StaticSolver::external_force(const std::vector<NodeState>& state
 
 // Factorizes K with the current solver, falling back from CHOLMOD to UMFPACK once if K is not
 // positive definite (e.g. past a limit point; a singular K then fails in UMFPACK too).
-Eigen::VectorXd StaticSolver::factor_and_solve(const SparseMatrix& K, const Eigen::VectorXd& rhs) {
+void StaticSolver::factorize(const SparseMatrix& K) {
   try {
     solver_->factorize(K);
   } catch (const Error&) {
@@ -95,7 +95,6 @@ Eigen::VectorXd StaticSolver::factor_and_solve(const SparseMatrix& K, const Eige
     solver_ = make_linear_solver("umfpack");
     solver_->factorize(K);
   }
-  return solver_->solve(rhs);
 }
 
 void StaticSolver::finish_step(const std::vector<NodeState>& state, double lambda,
@@ -122,14 +121,7 @@ void StaticSolver::solve_linear(std::vector<NodeState>& state, const StepCallbac
   const std::vector<NodeState> reference = reference_state(mesh_);
   Assembly& assembly = assembly_;
   assembler_.assemble(reference, ElementRequest{false, true}, assembly);
-  solver_->analyze(assembly.tangent);
-  try {
-    solver_->factorize(assembly.tangent);
-  } catch (const Error&) {
-    if (!solver_->needs_spd()) throw;
-    solver_ = make_linear_solver("umfpack");
-    solver_->factorize(assembly.tangent);
-  }
+  factorize(assembly.tangent);
   for (int i = 1; i <= settings_.steps; ++i) {
     const double lambda = double(i) / settings_.steps;
     // Linear: f_int(q_p) with the free dofs at zero, then K_ff q_f = lambda f - f_int(q_p).
@@ -166,7 +158,12 @@ StaticSolver::Attempt StaticSolver::newton(std::vector<NodeState>& state, double
   Assembly& assembly = assembly_;
   double energy0 = 0, energy_ratio = 1;
   for (int k = 0;; ++k) {
-    assembler_.assemble(state, ElementRequest{true, true}, assembly);
+    try {
+      assembler_.assemble(state, ElementRequest{true, true}, assembly);
+    } catch (const Error& e) {  // e.g. an element inverted by a too-large step: retry smaller
+      if (e.kind() != ErrorKind::kNumerical) throw;
+      return {false, e.reason()};
+    }
     const Eigen::VectorXd f_ext = external_force(state, lambda);
     const Eigen::VectorXd r = dofs_.restrict_to_free(assembly.internal_force - f_ext);
     const double reference = std::max(f_ext.norm(), assembly.internal_force.norm());
@@ -190,7 +187,15 @@ StaticSolver::Attempt StaticSolver::newton(std::vector<NodeState>& state, double
       for_each_follower_stiffness(mesh_, loads_, state, [&](int e, const auto& block) {
         assembler_.add_element_block(e, block, -lambda, assembly.tangent);
       });
-    const Eigen::VectorXd q = factor_and_solve(assembly.tangent, -r);
+    try {
+      factorize(assembly.tangent);
+    } catch (const Error& e) {
+      // Singular at the start of a step: the converged state itself (missing supports, or a
+      // critical point) - smaller steps cannot help. Later, the iterate has wandered: retry.
+      if (e.kind() != ErrorKind::kNumerical || k == 0) throw;
+      return {false, e.reason()};
+    }
+    const Eigen::VectorXd q = solver_->solve(-r);
     const double energy = std::abs(q.dot(r));
     if (k == 0) energy0 = energy;
     energy_ratio = energy0 > 0 ? energy / energy0 : 0.0;

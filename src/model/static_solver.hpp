@@ -83,7 +83,7 @@ class StaticSolver {
   Attempt newton(std::vector<NodeState>& state, double lambda, StepResult& result);
   void set_prescribed(std::vector<NodeState>& state, double lambda) const;
   Eigen::VectorXd external_force(const std::vector<NodeState>& state, double lambda) const;
-  Eigen::VectorXd factor_and_solve(const SparseMatrix& K, const Eigen::VectorXd& rhs);
+  void factorize(const SparseMatrix& K);
   void finish_step(const std::vector<NodeState>& state, double lambda, const Assembly& assembly,
                    const Eigen::VectorXd& f_ext, StepResult& result) const;
 

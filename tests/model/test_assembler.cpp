@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "model/supports.hpp"
 #include "spring_net_element.hpp"
 #include "test_meshes.hpp"
@@ -99,6 +100,34 @@ TEST(Assembler, OpenMpEqualsSerial) {
   parallel.assemble(s, {}, a2);
   EXPECT_EQ(a1.internal_force, a2.internal_force);
   EXPECT_EQ(a1.tangent.valuePtr()[7], a2.tangent.valuePtr()[7]);
+}
+
+// An element that refuses one element's state: the error crosses the OpenMP region intact.
+class RefusingElement : public SpringNetElement {
+ public:
+  void compute(const ElementGeometry& geo, const std::array<NodeState, 4>& nodes,
+               const ShellLaw& law, Kinematics kin, const ElementRequest& req,
+               ElementResponse& out) const override {
+    if (geo.X[0].norm() == 0.0) throw_numerical("element 0 is inverted");
+    SpringNetElement::compute(geo, nodes, law, kin, req, out);
+  }
+};
+
+TEST(Assembler, ElementErrorsLeaveTheParallelRegion) {
+  const Mesh m = testing::square_plate(6, 6);
+  const DofMap dofs = make_dof_map(m, {{SupportKind::kClamped, "left", -1, {}}});
+  const RefusingElement el;
+  for (int threads : {1, 2}) {
+    const Assembler a(m, dofs, el, testing::unused_law(), Kinematics::kNonlinear, threads);
+    Assembly out = a.make_assembly();
+    try {
+      a.assemble(reference_state(m), {}, out);
+      ADD_FAILURE() << "no error with " << threads << " threads";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::kNumerical);
+      EXPECT_EQ(e.reason(), "element 0 is inverted");
+    }
+  }
 }
 
 TEST(Assembler, ReactionsAreInternalMinusExternalAtPrescribedDofs) {

@@ -169,6 +169,39 @@ TEST(StaticSolver, FailedStepReportsLoadFactorAndKeepsConvergedSteps) {
   EXPECT_EQ(state[c.tip].u, solver.steps().back().displacements[0]);
 }
 
+// Same with an element that throws a numerical error (e.g. an inverted element) past the limit:
+// a recoverable failure, halved like a divergence, and reported with the element's reason.
+class ThrowingElement : public SpringNetElement {
+ public:
+  void compute(const ElementGeometry& geo, const std::array<NodeState, 4>& nodes,
+               const ShellLaw& law, Kinematics kin, const ElementRequest& req,
+               ElementResponse& out) const override {
+    for (const NodeState& n : nodes)
+      if (n.u.norm() > 0.6) throw_numerical("element distorted beyond repair");
+    SpringNetElement::compute(geo, nodes, law, kin, req, out);
+  }
+};
+
+TEST(StaticSolver, ElementErrorsAreRecoverableFailures) {
+  const Cantilever c;
+  const ThrowingElement throwing;
+  StaticSettings s = c.settings(4);
+  s.max_halvings = 2;
+  StaticSolver solver(c.mesh, c.dofs, throwing, unused_law(), Kinematics::kNonlinear,
+                      c.tip_load(200.0), s);
+  std::vector<NodeState> state = reference_state(c.mesh);
+  try {
+    solver.solve(state);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::kNumerical);
+    EXPECT_NE(std::string(e.what()).find("element distorted beyond repair after 2 step halvings"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(solver.steps().empty());
+}
+
 TEST(StaticSolver, FreeBodyIsReportedAsInsufficientlySupported) {
   const Mesh m = testing::square_plate(3, 3);
   const DofMap dofs = make_dof_map(m, {});
