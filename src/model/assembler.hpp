@@ -72,10 +72,12 @@ class Assembler {
   int threads_;
   std::vector<ElementGeometry> geometry_;
   SparseMatrix pattern_;
-  std::vector<int> slots_;  // 400 per element, row-major (i, j), -1 = prescribed row or column
-  std::vector<int> colour_order_;  // elements sorted by colour
-  std::vector<int>
-      colour_start_;  // colour c is colour_order_[colour_start_[c], colour_start_[c+1])
+  // Value slot of entry (i, j) of element e's 20x20 block: slots_[400 e + 20 i + j], -1 where
+  // the row or column is a prescribed dof.
+  std::vector<int> slots_;
+  // Elements sorted by colour: colour c is colour_order_[colour_start_[c] .. colour_start_[c+1]).
+  std::vector<int> colour_order_;
+  std::vector<int> colour_start_;
 };
 
 // Reactions: internal force minus external load at the prescribed dofs, zero at free dofs.
