@@ -1,0 +1,25 @@
+#include "model/linear_solver.hpp"
+
+#include <sstream>
+
+#include "core/error.hpp"
+#include "model/cholmod_solver.hpp"
+#include "model/umfpack_solver.hpp"
+
+namespace si {
+
+std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name) {
+  if (name == "cholmod") return std::make_unique<CholmodSolver>();
+  if (name == "umfpack") return std::make_unique<UmfpackSolver>();
+  throw_input("unknown linear solver (expected cholmod or umfpack)",
+              Where{"", "linear_solver", name, 0});
+}
+
+std::string singular_matrix_message(const std::string& solver, double rcond) {
+  std::ostringstream os;
+  os << "stiffness matrix is singular (" << solver << ", pivot ratio " << rcond
+     << "): the model may be insufficiently supported (free rigid-body motion)";
+  return os.str();
+}
+
+}  // namespace si
