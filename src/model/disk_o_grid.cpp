@@ -144,4 +144,10 @@ Mesh disk_o_grid(const DiskGrading& grading, Symmetry symmetry) {
   return disk;
 }
 
+void add_symmetry_node_sets(Mesh& mesh, Symmetry symmetry) {
+  if (symmetry != Symmetry::kQuarter) return;
+  set_node_set(mesh, "symmetry_x", nodes_where(mesh, [](const Vector3d& p) { return p.x() == 0; }));
+  set_node_set(mesh, "symmetry_y", nodes_where(mesh, [](const Vector3d& p) { return p.y() == 0; }));
+}
+
 }  // namespace si

@@ -39,4 +39,8 @@ void validate(const DiskGrading& grading);
 // Directors +z; node sets are left to the caller.
 Mesh disk_o_grid(const DiskGrading& grading, Symmetry symmetry);
 
+// For a quarter model, the node sets "symmetry_x" (nodes on x = 0) and "symmetry_y" (y = 0).
+// The O-grid places those nodes exactly on the planes, so the test is exact.
+void add_symmetry_node_sets(Mesh& mesh, Symmetry symmetry);
+
 }  // namespace si

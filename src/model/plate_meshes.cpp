@@ -65,12 +65,7 @@ Mesh circular_plate_mesh(double radius, double size_center, double size_edge, do
                  return std::abs(p.norm() - radius) < tol;
                }));
   set_node_set(mesh, "center", nodes_where(mesh, [](const Vector3d& p) { return p.isZero(0); }));
-  if (symmetry == Symmetry::kQuarter) {
-    set_node_set(mesh, "symmetry_x",
-                 nodes_where(mesh, [](const Vector3d& p) { return p.x() == 0; }));
-    set_node_set(mesh, "symmetry_y",
-                 nodes_where(mesh, [](const Vector3d& p) { return p.y() == 0; }));
-  }
+  add_symmetry_node_sets(mesh, symmetry);
   check_mesh(mesh);
   return mesh;
 }

@@ -62,12 +62,7 @@ Mesh spherical_cap_mesh(const SphericalCapMeshSpec& spec) {
                nodes_where(mesh, [&](const Vector3d& p) { return std::abs(p.z()) < tol; }));
   set_node_set(mesh, "apex",
                nodes_where(mesh, [](const Vector3d& p) { return p.x() == 0 && p.y() == 0; }));
-  if (spec.symmetry == Symmetry::kQuarter) {
-    set_node_set(mesh, "symmetry_x",
-                 nodes_where(mesh, [](const Vector3d& p) { return p.x() == 0; }));
-    set_node_set(mesh, "symmetry_y",
-                 nodes_where(mesh, [](const Vector3d& p) { return p.y() == 0; }));
-  }
+  add_symmetry_node_sets(mesh, spec.symmetry);
   check_mesh(mesh);
   return mesh;
 }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "material_fixtures.hpp"
+
 #include <cmath>
 #include <functional>
 #include <string>
@@ -11,24 +13,8 @@
 namespace si {
 namespace {
 
-// Nine distinct constants, so that a swapped index in the compliance shows up.
-EngineeringConstants generic_constants() {
-  EngineeringConstants c;
-  c.E1 = 140000;
-  c.E2 = 9000;
-  c.E3 = 11000;
-  c.G12 = 5000;
-  c.G13 = 4500;
-  c.G23 = 3200;
-  c.nu12 = 0.28;
-  c.nu13 = 0.31;
-  c.nu23 = 0.42;
-  return c;
-}
-
-double max_abs(const Matrix6d& m) {
-  return m.cwiseAbs().maxCoeff();
-}
+using testing::generic_constants;
+using testing::max_abs;
 
 TEST(Material, ComplianceTimesStiffnessIsIdentity) {
   for (const Material& m : {Material::orthotropic("generic", generic_constants()),

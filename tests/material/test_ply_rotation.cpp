@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "material_fixtures.hpp"
+
 #include <cmath>
 
 #include "material/material.hpp"
@@ -9,22 +11,10 @@
 namespace si {
 namespace {
 
-double max_abs(const Matrix6d& m) {
-  return m.cwiseAbs().maxCoeff();
-}
+using testing::max_abs;
 
 Material generic_material() {
-  EngineeringConstants c;
-  c.E1 = 140000;
-  c.E2 = 9000;
-  c.E3 = 11000;
-  c.G12 = 5000;
-  c.G13 = 4500;
-  c.G23 = 3200;
-  c.nu12 = 0.28;
-  c.nu13 = 0.31;
-  c.nu23 = 0.42;
-  return Material::orthotropic("generic", c);
+  return Material::orthotropic("generic", testing::generic_constants());
 }
 
 // A fully anisotropic SPD stiffness, so that every entry of the rotation is exercised.
