@@ -17,7 +17,7 @@ using Matrix8x20d = Eigen::Matrix<double, 8, kShellElementDofs>;
 using Matrix3x2d = Eigen::Matrix<double, 3, 2>;
 using RotationBases = std::array<Matrix3x2d, 4>;  // delta d_I = T_I (a_I, b_I), T_I = [-v2, v1]
 
-// Mid-surface quantities at one parametric point (a = xi, eta).
+// Short numbers for error messages.
 std::string number(double v) {
   std::ostringstream s;
   s.precision(3);
@@ -25,6 +25,7 @@ std::string number(double v) {
   return s.str();
 }
 
+// Mid-surface quantities at one parametric point (a = xi, eta).
 struct PointKinematics {
   Shape4 shape;
   std::array<Vector3d, 2> X_a, x_a, D_a, d_a;
