@@ -131,18 +131,22 @@ void StaticSolver::solve_linear(std::vector<NodeState>& state, const StepCallbac
     const Eigen::VectorXd f_ext = external_force(state, lambda);
     const Eigen::VectorXd q =
         solver_->solve(dofs_.restrict_to_free(f_ext - assembly.internal_force));
+    // Translations add; the rotation dofs (a, b) of a node set its director with ONE
+    // rotate_node call from the reference frame, so that the element's linear mode reads back
+    // exactly (a, b) (shell_element.hpp). A linearised director D + a V1 x D + b V2 x D would be
+    // read as atan(|theta|): f_int, reactions and energy off at third order in the rotations.
+    Eigen::MatrixX2d rotation = Eigen::MatrixX2d::Zero(mesh_.num_nodes(), 2);
     for (int eq = 0; eq < dofs_.num_free(); ++eq) {
       const int dof = dofs_.free_dofs()[eq];
-      NodeState& s = state[dof / kShellNodeDofs];
-      const int local = dof % kShellNodeDofs;
+      const int node = dof / kShellNodeDofs, local = dof % kShellNodeDofs;
       if (local < 3) {
-        s.u[local] += q[eq];
+        state[node].u[local] += q[eq];
       } else {
-        // Small rotation about the reference axis: d += theta (v x D).
-        const Vector3d& axis = local == 3 ? s.v1 : s.v2;
-        s.d += q[eq] * axis.cross(reference[dof / kShellNodeDofs].d);
+        rotation(node, local - 3) = q[eq];
       }
     }
+    for (int node = 0; node < mesh_.num_nodes(); ++node)
+      rotate_node(state[node], rotation(node, 0), rotation(node, 1));
     assembler_.assemble(state, ElementRequest{true, false}, assembly);
     StepResult result;
     result.iterations = 1;
