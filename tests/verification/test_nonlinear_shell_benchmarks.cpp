@@ -122,10 +122,12 @@ const std::vector<double> kSze33WOuter = {
     13.768, 14.240, 14.674, 15.081, 15.469, 15.842, 16.202, 16.550, 16.886, 17.212, 17.528};
 
 // Runs the slit plate in `steps` equal load steps and checks the tabulated levels that are load
-// steps. Newton tolerance 1e-6: the relative residual has a round-off floor of about 3.5e-8 on
-// this thin plate (membrane stiffness E h = 6.3e5 against a total load of 3.2; measured after
-// quadratic convergence at q/qmax = 2.4e-5), so 1e-8 is out of reach; a residual of 1e-6 of
-// the load changes the displacements by far less than the 2 % acceptance.
+// steps. Newton tolerance 1e-5 (not the default 1e-8): on this thin plate the free-dof residual
+// has a round-off floor of about 3.5e-8 N (membrane stiffness E h = 6.3e5 times the rounding of
+// coordinates of size 10; measured after quadratic convergence at q/qmax = 2.4e-5), which is
+// 1e-6 of the applied load at q/qmax = 0.025 and more after a step halving, so 1e-8 and even
+// 1e-6 cannot be relied on. The tabulated W agree to 4 digits between tolerances 1e-4 and 1e-6
+// (measured), far inside the 2 % acceptance.
 void check_slit_plate(int n_radial, int n_circ, int steps) {
   const double Ri = 6, Ro = 10, h = 0.03, E = 21e6, q = 0.8;
   const Mesh mesh = annulus_with_slit_mesh(Ri, Ro, n_radial, n_circ);
@@ -133,7 +135,7 @@ void check_slit_plate(int n_radial, int n_circ, int steps) {
   loads.lines.push_back({mesh.node_sets.at("slit_loaded"), Vector3d(0, 0, q)});  // ordered by r
   StaticSettings settings;
   settings.steps = steps;
-  settings.tolerance = 1e-6;
+  settings.tolerance = 1e-5;
   settings.record_nodes = {mesh.node_sets.at("loaded_inner")[0],
                            mesh.node_sets.at("loaded_outer")[0]};
   const BenchmarkRun run =
