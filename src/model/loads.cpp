@@ -98,6 +98,17 @@ void validate(const Mesh& mesh, const Loads& loads) {
                     std::to_string(l.edge_nodes[s + 1]) + " coincide (zero-length segment)");
     if (!finite(l.force_per_length)) throw_input(who + ": force per length is not finite");
   }
+  for (std::size_t i = 0; i < loads.moments.size(); ++i) {
+    const std::string who = "nodal moment " + std::to_string(i);
+    const NodalMoment& m = loads.moments[i];
+    const std::vector<int>& nodes = find_node_set(mesh, m.node_set, who);
+    if (nodes.empty()) throw_input(who + ": node set '" + m.node_set + "' is empty");
+    if (!finite(m.moment)) throw_input(who + ": moment is not finite");
+    for (int n : nodes)
+      if (std::abs(m.moment.dot(mesh.directors[n])) > 1e-12 * m.moment.norm())
+        throw_input(who + ": the moment has a component along the director of node " +
+                    std::to_string(n) + " (drilling), which the 5-dof nodes cannot carry");
+  }
   for (std::size_t i = 0; i < loads.pressures.size(); ++i) {
     const std::string who = "pressure load " + std::to_string(i);
     if (!std::isfinite(loads.pressures[i].pressure)) throw_input(who + ": pressure is not finite");
@@ -122,6 +133,15 @@ Eigen::VectorXd fixed_load_vector(const Mesh& mesh, const Loads& loads) {
       const Vector3d half = 0.5 * (mesh.nodes[b] - mesh.nodes[a]).norm() * l.force_per_length;
       add_translation(f, a, half);
       add_translation(f, b, half);
+    }
+  }
+  for (const NodalMoment& m : loads.moments) {
+    const std::vector<int>& nodes = mesh.node_sets.at(m.node_set);
+    const Vector3d each = m.per_node ? m.moment : Vector3d(m.moment / double(nodes.size()));
+    for (int n : nodes) {
+      const NodeState axes = reference_node_state(mesh.directors[n]);
+      f[DofMap::dof(n, 3)] += each.dot(axes.v1);
+      f[DofMap::dof(n, 4)] += each.dot(axes.v2);
     }
   }
   for (const PressureLoad& pl : loads.pressures)

@@ -1,6 +1,7 @@
 // External loads at load factor 1; the static solver multiplies all of them by the load factor.
-// Loads act on the translation dofs only (no applied moments). Vectors are full dof vectors
-// (dof_map.hpp numbering, 5 per node), forces in N.
+// Point, line and pressure loads act on the translation dofs; nodal moments (below) on the
+// rotation dofs. Vectors are full dof vectors (dof_map.hpp numbering, 5 per node), forces in N,
+// moments in N mm.
 //
 // Pressure: the traction is p n on the mid-surface, n the unit normal of the element surface
 // oriented by the node order (counter-clockwise about the directors, so n agrees with them): a
@@ -35,6 +36,22 @@ struct LineLoad {
   Vector3d force_per_length = Vector3d::Zero();  // N/mm
 };
 
+// A moment M applied at the nodes of a set. The rotation dofs a, b of a node are rotation
+// increments about its axes v1, v2 (shell_element.hpp), so the virtual work of M is
+// M . (delta a v1 + delta b v2): the generalised forces are M . v1 and M . v2. They are taken
+// with the REFERENCE axes V1, V2 (director.hpp) and kept constant, a load that does not depend
+// on the state. This is the work of the moment M exactly while M . v1 and M . v2 keep their
+// reference values, e.g. a moment about a fixed axis that is one of the node's axes and about
+// which all its rotation takes place (plane bending: the axis stays v1 or v2; Sze, Liu & Lo
+// 2004, cantilever rolled up by an end moment). For general 3-D rotations it is neither a
+// fixed-axis nor a follower moment. A component of M along the director (drilling) has no dof
+// to act on and is refused.
+struct NodalMoment {
+  std::string node_set;
+  Vector3d moment = Vector3d::Zero();  // N mm
+  bool per_node = false;               // false: `moment` is the total, split equally over the set
+};
+
 struct PressureLoad {
   double pressure = 0;        // MPa
   bool follower = false;      // follows the deformed surface (see above)
@@ -45,15 +62,18 @@ struct Loads {
   std::vector<PointLoad> points;
   std::vector<LineLoad> lines;
   std::vector<PressureLoad> pressures;
+  std::vector<NodalMoment> moments;
 
   bool has_follower() const;
 };
 
 // Throws an input error for unknown node sets, nodes or elements out of range, a line load with
-// fewer than 2 nodes or a zero-length segment, or a non-finite value.
+// fewer than 2 nodes or a zero-length segment, a nodal moment with a component along a node's
+// director (|M . D| > 1e-12 |M|), or a non-finite value.
 void validate(const Mesh& mesh, const Loads& loads);
 
-// Point, line and dead pressure loads (everything that does not depend on the state).
+// Point, line, nodal moment and dead pressure loads (everything that does not depend on the
+// state).
 Eigen::VectorXd fixed_load_vector(const Mesh& mesh, const Loads& loads);
 
 // Follower pressure loads at the current nodal positions.
