@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "shell/director.hpp"
 
 namespace si {
 namespace {
@@ -131,18 +132,21 @@ void StaticSolver::solve_linear(std::vector<NodeState>& state, const StepCallbac
     const Eigen::VectorXd f_ext = external_force(state, lambda);
     const Eigen::VectorXd q =
         solver_->solve(dofs_.restrict_to_free(f_ext - assembly.internal_force));
+    // The rotations (a, b) of a node are applied by ONE rotate_node call from the reference
+    // state, so that the element's linear mode recovers them exactly (shell_element.hpp); a
+    // linearised d = D + a v1 x D + b v2 x D would come back as atan(|theta|), an O(theta^3)
+    // error that showed as a 2e-8 relative imbalance of the reactions.
+    std::vector<Vector2d> rotation(state.size(), Vector2d::Zero());
     for (int eq = 0; eq < dofs_.num_free(); ++eq) {
       const int dof = dofs_.free_dofs()[eq];
-      NodeState& s = state[dof / kShellNodeDofs];
-      const int local = dof % kShellNodeDofs;
-      if (local < 3) {
-        s.u[local] += q[eq];
-      } else {
-        // Small rotation about the reference axis: d += theta (v x D).
-        const Vector3d& axis = local == 3 ? s.v1 : s.v2;
-        s.d += q[eq] * axis.cross(reference[dof / kShellNodeDofs].d);
-      }
+      const int node = dof / kShellNodeDofs, local = dof % kShellNodeDofs;
+      if (local < 3)
+        state[node].u[local] += q[eq];
+      else
+        rotation[node][local - 3] = q[eq];
     }
+    for (size_t n = 0; n < state.size(); ++n)
+      if (!rotation[n].isZero(0.0)) rotate_node(state[n], rotation[n][0], rotation[n][1]);
     assembler_.assemble(state, ElementRequest{true, false}, assembly);
     StepResult result;
     result.iterations = 1;

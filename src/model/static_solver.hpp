@@ -13,8 +13,8 @@
 // Linear kinematics: K is assembled and factorized once at the reference state and each load
 // level is one solve, K_ff q_f = lambda f - f_int(prescribed q_p) (plus two force-only
 // assemblies: f_int of the prescribed displacements, and the final f_int for the reactions).
-// The state is the reference state plus u += q_u and the linearised director
-// d = D + a v1 x D + b v2 x D (axes not rotated), which records the small rotations; follower
+// The state is the reference state plus u += q_u and, per node, ONE rotate_node(a, b) from the
+// reference frame, which the element's linear mode inverts exactly (shell_element.hpp); follower
 // pressures act at the reference positions (as dead ones).
 //
 // Linear solver: `linear_solver` for symmetric tangents; a follower pressure (non-symmetric

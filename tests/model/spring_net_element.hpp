@@ -9,10 +9,11 @@
 // The dofs are those of shell/shell_element.hpp: du and rotations a, b about the current v1, v2
 // with d(a, b) = exp(skew(a v1 + b v2)) d, so force and tangent are the exact gradient and
 // Hessian of W(q) at q = 0 (chain rule below). In linear mode the element returns K0 q, with K0
-// the tangent at the reference state and q = (u, small rotations recovered from d - D).
+// the tangent at the reference state and q = (u, the rotation vector from D to d on V1, V2).
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "shell/shell_element.hpp"
@@ -38,10 +39,16 @@ class SpringNetElement : public ShellElement {
       nonlinear(geo, ref, k0);
       Eigen::Matrix<double, 20, 1> q;
       for (int a = 0; a < 4; ++a) {
-        const Vector3d dd = nodes[a].d - geo.D[a];  // = a v1 x D + b v2 x D = -a V2 + b V1
+        // The rotation vector theta taking D to d, read on the reference axes: the exact inverse
+        // of rotate_node(reference_node_state(D), a, b), as shell_element.hpp asks of the linear
+        // mode (the static solver sets d that way).
+        const Vector3d axis = geo.D[a].cross(nodes[a].d);
+        const double s = axis.norm();
+        const Vector3d theta =
+            s > 1e-12 ? Vector3d(axis * (std::atan2(s, geo.D[a].dot(nodes[a].d)) / s)) : axis;
         q.segment<3>(5 * a) = nodes[a].u;
-        q[5 * a + 3] = -dd.dot(ref[a].v2);
-        q[5 * a + 4] = dd.dot(ref[a].v1);
+        q[5 * a + 3] = theta.dot(ref[a].v1);
+        q[5 * a + 4] = theta.dot(ref[a].v2);
       }
       out.tangent = k0.tangent;
       out.force = k0.tangent * q;
