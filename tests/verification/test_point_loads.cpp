@@ -114,8 +114,12 @@ TEST_F(ClampedPlateLinear, ReactionsBalanceTheLoad) {
 TEST(PointLoads, ClampedPlateNonlinear_TrapezoidWorkEqualsStrainEnergy) {
   const double force = 1.0e5;
   const int steps = 8;
-  const StaticRun run = run_static_case(
-      isotropic_case(kT, kPlateShell, kPlateMesh, "nonlinear", apex_load(force, steps)));
+  // A coarser mesh than the linear check: the identity holds on any mesh, and this keeps the
+  // eight Newton steps cheap.
+  const char* const mesh =
+      "{size_apex: 1 mm, size_edge: 2.5 mm, refine_radius: 10 mm, symmetry: quarter}";
+  const StaticRun run =
+      run_static_case(isotropic_case(kT, kPlateShell, mesh, "nonlinear", apex_load(force, steps)));
   ASSERT_EQ(run.steps.size(), static_cast<size_t>(steps));
   std::vector<double> F{0}, w{0};
   for (const StepResult& s : run.steps) {
