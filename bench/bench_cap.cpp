@@ -33,7 +33,7 @@ CaseFile paper_cap(long size_apex_cmm, long size_edge_cmm) {
 
 // (size_apex, size_edge) in 0.01 mm giving ~1e3, ~1e4, ~1e5 free dofs, times 1 and 2 threads.
 void sizes_threads(benchmark::internal::Benchmark* b) {
-  for (auto [apex, edge] : {std::pair{250L, 400L}, std::pair{80L, 125L}, std::pair{25L, 40L}})
+  for (auto [apex, edge] : {std::pair{250L, 400L}, std::pair{92L, 143L}, std::pair{29L, 46L}})
     for (long t : {1L, 2L}) b->Args({apex, edge, t});
 }
 
