@@ -1,6 +1,7 @@
 #include "app/static_command.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <vector>
@@ -73,20 +74,20 @@ nlohmann::json json_of(const CaseFile& c, const ShellModel& m, const DofMap& dof
           {"steps", steps}};
 }
 
-void write_results(const std::string& dir, const ShellModel& m, const Assembler& assembler,
-                   const std::vector<NodeState>* last_state, const std::string& csv,
-                   const std::string& json, std::ostream& err) {
-  write_file_atomically(dir + "/static.csv", csv);
-  write_file_atomically(dir + "/static.json", json);
-  err << "wrote " << dir << "/static.csv and " << dir << "/static.json";
+void write_results(const std::filesystem::path& dir, const ShellModel& m,
+                   const Assembler& assembler, const std::vector<NodeState>* last_state,
+                   const std::string& csv, const std::string& json, std::ostream& err) {
+  write_file_atomically((dir / "static.csv").string(), csv);
+  write_file_atomically((dir / "static.json").string(), json);
+  err << "wrote " << (dir / "static.csv").string() << " and " << (dir / "static.json").string();
   if (last_state != nullptr) {
     const Eigen::MatrixXd resultants =
         nodal_resultants(m.mesh, assembler, *m.element, m.law, *last_state);
     VtuFields fields;
     fields.point_data["N"] = resultants.leftCols(3);
     fields.point_data["M"] = resultants.rightCols(3);
-    write_vtu(dir + "/static.vtu", m.mesh, *last_state, fields);
-    err << " and " << dir << "/static.vtu";
+    write_vtu((dir / "static.vtu").string(), m.mesh, *last_state, fields);
+    err << " and " << (dir / "static.vtu").string();
   }
   err << "\n";
 }
@@ -131,7 +132,7 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
       << "  lambda        force_N  deflection_mm  strain_energy_Nmm     reaction_N  iters\n";
   for (const auto& r : rows) out << format_row(r) << "\n";
 
-  const std::string dir = o.out_dir.empty() ? c.output.dir : o.out_dir;
+  const std::filesystem::path dir = o.out_dir.empty() ? c.output.dir : o.out_dir;
   const Assembler assembler(m.mesh, dofs, *m.element, m.law, m.kinematics, o.threads);
   write_results(dir, m, assembler, rows.empty() ? nullptr : &last_state, csv_text(rows),
                 json_of(c, m, dofs, rows, failure).dump(2) + "\n", err);
