@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/section_command.hpp"
+#include "app/static_command.hpp"
 #include "core/error.hpp"
 
 namespace {
@@ -14,8 +15,9 @@ namespace {
 constexpr const char* kDescription =
     "shellindent " SHELLINDENT_VERSION
     " - static indentation of laminated composite shells by rigid indenters.\n"
-    "Section analysis (CLT, FSDT, variational-asymptotic Reissner-Mindlin law), with shell\n"
-    "elements, contact and path following to come. Quantities carry units: \"0.475 mm\",\n"
+    "Section analysis (CLT, FSDT, variational-asymptotic Reissner-Mindlin law) and static shell\n"
+    "runs under apex force or pressure; contact and path following to come. Quantities carry "
+    "units: \"0.475 mm\",\n"
     "\"130 GPa\", \"45 deg\". Internal units are mm, N, MPa.";
 
 constexpr const char* kSectionHelp =
@@ -26,6 +28,16 @@ constexpr const char* kSectionHelp =
     "  shellindent section --layup \"[45/-45]2S\" --material paper-carbon-epoxy "
     "--ply-thickness 0.475mm\n"
     "  shellindent section --paper --out results   (all of the source paper's lay-ups)";
+
+constexpr const char* kStaticHelp =
+    "Load-controlled static run of a shell without contact, from a case file with a `load` "
+    "section (apex_force or pressure, in `steps` equal increments; linear or nonlinear from "
+    "`kinematics`). Prints a progress line per step to stderr and a table (load factor, force N, "
+    "apex deflection mm, strain energy N*mm, reaction N, iterations) to stdout, then writes "
+    "static.csv, static.json and static.vtu (last step, nodal resultants N and M averaged over "
+    "elements) to the output directory. Exit 1 if a step fails (converged steps are written).\n"
+    "Example:\n"
+    "  shellindent static studies/cap_apex_load.yaml --out results/cap_apex_load";
 
 int run(int argc, char** argv) {
   CLI::App app{kDescription, "shellindent"};
@@ -57,6 +69,16 @@ int run(int argc, char** argv) {
                    "polynomial order of the through-thickness elements (>= 3 gives exact G)")
       ->capture_default_str();
 
+  si::StaticCommandOptions sto;
+  auto* static_cmd = app.add_subcommand("static", kStaticHelp);
+  static_cmd->add_option("case", sto.case_file, "YAML case file with a load section")
+      ->required()
+      ->check(CLI::ExistingFile);
+  static_cmd->add_option("--out", sto.out_dir,
+                         "output directory (default: output.dir of the case file)");
+  static_cmd->add_option("--threads", sto.threads, "assembly threads (0: OpenMP default)")
+      ->capture_default_str();
+
   auto* materials = app.add_subcommand("materials", "List the built-in material library.");
 
   std::string notation;
@@ -86,6 +108,7 @@ int run(int argc, char** argv) {
   }
 
   if (*section) return si::run_section_command(so, std::cout);
+  if (*static_cmd) return si::run_static_command(sto, std::cout, std::cerr);
   if (*materials) return si::run_materials_command(std::cout);
   if (*layup) return si::run_layup_command(notation, std::cout);
   return 2;

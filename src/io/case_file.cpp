@@ -42,6 +42,9 @@ const Choices<LocalContactModel> kLocalModels{{"none", LocalContactModel::kNone}
                                               {"vam", LocalContactModel::kVam}};
 const Choices<PathMethod> kMethods{{"natural", PathMethod::kNatural},
                                    {"pseudo_arclength", PathMethod::kPseudoArclength}};
+const Choices<LoadType> kLoadTypes{{"apex_force", LoadType::kApexForce},
+                                   {"pressure", LoadType::kPressure}};
+const Choices<bool> kBooleans{{"false", false}, {"true", true}};
 const Choices<OutputFormat> kFormats{
     {"csv", OutputFormat::kCsv}, {"json", OutputFormat::kJson}, {"vtu", OutputFormat::kVtu}};
 
@@ -233,6 +236,28 @@ OutputSpec read_output(const MapReader& top) {
   return output;
 }
 
+// The load section is optional; once written, its magnitude is required (no paper default).
+std::optional<LoadSpec> read_load(const MapReader& top) {
+  const auto map = section(top, "load");
+  if (!map) return std::nullopt;
+  LoadSpec load;
+  load.type = map->choice("type", kLoadTypes);
+  switch (load.type) {
+    case LoadType::kApexForce:
+      map->allow_only({"type", "force", "steps"});
+      load.force = map->positive("force", Dimension::kForce);
+      break;
+    case LoadType::kPressure:
+      map->allow_only({"type", "pressure", "steps", "follower"});
+      load.pressure = map->positive("pressure", Dimension::kStress);
+      load.follower = map->choice_or("follower", kBooleans, load.follower);
+      break;
+  }
+  load.steps = map->integer_or("steps", load.steps);
+  if (load.steps < 1) throw_input("must be a whole number >= 1", map->where("steps"));
+  return load;
+}
+
 MaterialTable read_materials(const MapReader& top) {
   const Material default_material = read_material(top.at("material"), top.where("material"));
   std::vector<Material> named;
@@ -264,7 +289,7 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   if (root.IsNull()) throw_input("the case file is empty", Where{file_label, "", "", 0});
   const MapReader top(root, Where{file_label, "", "", 0});
   top.allow_only({"material", "materials", "laminate", "shell", "mesh", "kinematics", "indenter",
-                  "contact", "path", "output"});
+                  "contact", "path", "output", "load"});
   top.at("laminate");  // say it is missing before reading the rest
   const MaterialTable materials = read_materials(top);
   return CaseFile{read_laminate(top.at("laminate"), top.where("laminate"), materials),
@@ -276,6 +301,7 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
                   read_contact(top),
                   read_path(top),
                   read_output(top),
+                  read_load(top),
                   file_label};
 }
 

@@ -89,6 +89,20 @@ struct OutputSpec {
   std::vector<OutputFormat> formats{OutputFormat::kCsv, OutputFormat::kVtu};
 };
 
+enum class LoadType { kApexForce, kPressure };
+
+// A load-controlled run (`shellindent static`): the load grows from 0 to its full value in
+// `steps` equal increments. No contact: the indenter, contact and path sections are not used.
+struct LoadSpec {
+  LoadType type = LoadType::kApexForce;
+  double force = 0;       // N, apex_force: total force along -z at the apex node (the whole shell;
+                          //    a quarter model carries a quarter of it)
+  double pressure = 0;    // MPa, pressure: on every element, acting against the director (inwards
+                          //    on the cap's convex side, i.e. towards -z at the apex)
+  int steps = 10;         // >= 1
+  bool follower = false;  // pressure only: follows the deformed surface
+};
+
 struct CaseFile {
   Laminate laminate;
   Material material;  // the top-level `material:`, the default ply material
@@ -99,7 +113,8 @@ struct CaseFile {
   ContactSpec contact;
   PathSpec path;
   OutputSpec output;
-  std::string file;  // the file (or label) the case was read from
+  std::optional<LoadSpec> load;  // only for load-controlled runs
+  std::string file;              // the file (or label) the case was read from
 };
 
 // Reads and validates a case file. Every error is an input si::Error naming the file and, where

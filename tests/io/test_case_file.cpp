@@ -256,5 +256,23 @@ indenter: {shape: flat_punch, radius: 5 mm, edge_radius: 0.5 mm}
   EXPECT_DOUBLE_EQ(disc.indenter.edge_radius, 0.5);
 }
 
+TEST(CaseFile, LoadSectionIsOptionalAndConvertsUnits) {
+  EXPECT_FALSE(parse_case_file(kMinimal, "t.yaml").load.has_value());
+  const CaseFile apex = parse_case_file(
+      std::string(kMinimal) + "load: {type: apex_force, force: 1 kN, steps: 4}\n", "t.yaml");
+  ASSERT_TRUE(apex.load.has_value());
+  EXPECT_EQ(apex.load->type, LoadType::kApexForce);
+  EXPECT_DOUBLE_EQ(apex.load->force, 1000.0);
+  EXPECT_EQ(apex.load->steps, 4);
+  const CaseFile p = parse_case_file(
+      std::string(kMinimal) + "load: {type: pressure, pressure: 100 kPa, follower: true}\n",
+      "t.yaml");
+  ASSERT_TRUE(p.load.has_value());
+  EXPECT_EQ(p.load->type, LoadType::kPressure);
+  EXPECT_DOUBLE_EQ(p.load->pressure, 0.1);
+  EXPECT_TRUE(p.load->follower);
+  EXPECT_EQ(p.load->steps, 10);
+}
+
 }  // namespace
 }  // namespace si

@@ -322,6 +322,40 @@ TEST(CaseFileErrors, InvalidYamlSyntaxReportsTheLine) {
                {"", "radius: 80 mm", 4, "invalid YAML"});
 }
 
+TEST(CaseFileErrors, LoadForceWithoutUnit) {
+  expect_error(kHead + "load: {type: apex_force, force: 1000}\n",
+               {"load.force", "1000", 3, "missing unit"});
+}
+
+TEST(CaseFileErrors, LoadForceWithAStressUnit) {
+  expect_error(kHead + "load: {type: apex_force, force: 1 MPa}\n",
+               {"load.force", "1 MPa", 3, "force"});
+}
+
+TEST(CaseFileErrors, LoadPressureOnAnApexForceIsAnUnknownKey) {
+  expect_error(kHead + "load:\n  type: apex_force\n  force: 1 kN\n  pressure: 1 MPa\n",
+               {"load.pressure", "1 MPa", 6, "unknown key 'pressure'"});
+}
+
+TEST(CaseFileErrors, UnknownLoadType) {
+  expect_error(kHead + "load: {type: point, force: 1 kN}\n",
+               {"load.type", "point", 3, "apex_force"});
+}
+
+TEST(CaseFileErrors, LoadWithoutMagnitude) {
+  expect_error(kHead + "load: {type: pressure}\n", {"load.pressure", "", 3, "missing"});
+}
+
+TEST(CaseFileErrors, ZeroLoadSteps) {
+  expect_error(kHead + "load: {type: apex_force, force: 1 kN, steps: 0}\n",
+               {"load.steps", "0", 3, ">= 1"});
+}
+
+TEST(CaseFileErrors, FollowerIsABoolean) {
+  expect_error(kHead + "load: {type: pressure, pressure: 0.1 MPa, follower: yes}\n",
+               {"load.follower", "yes", 3, "false"});
+}
+
 TEST(CaseFileErrors, UnclosedFlowMap) {
   expect_error("material: paper-carbon-epoxy\nlaminate: {layup: \"[0]\", ply_thickness: 1 mm\n",
                {"", "", 3, "invalid YAML: end of map flow not found"});

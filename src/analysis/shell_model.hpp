@@ -1,0 +1,56 @@
+// A shell model ready for the solvers, built from a case file (docs/case-file.md, "How
+// `shellindent static` builds the model"): the mesh of `shell` + `mesh`, the VAM section law of
+// the laminate, the element, the kinematics, the edge supports and symmetry planes, and the
+// loads of the `load` section (no contact).
+//
+// Conventions:
+//  * Every mesh has the node sets "apex" (the load point: the cap's apex, the centre of a plate,
+//    the crown centre of a panel, at the origin in plan), "edge" (the supported boundary) and,
+//    for a quarter model (x >= 0, y >= 0), "symmetry_x" (x = 0) and "symmetry_y" (y = 0).
+//  * The laminate's x1 axis (ply angle 0) is the global x axis projected on the surface at each
+//    integration point (ElementGeometry::material_axis = e_x, shell_element.hpp).
+//  * The mesh is the laminate's reference surface; the law is the VAM A_R and G about it.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/case_file.hpp"
+#include "model/loads.hpp"
+#include "model/mesh.hpp"
+#include "model/supports.hpp"
+#include "shell/kinematics.hpp"
+#include "shell/shell_element.hpp"
+#include "shell/shell_law.hpp"
+
+namespace si {
+
+struct ShellModel {
+  Mesh mesh;
+  ShellLaw law;
+  std::unique_ptr<ShellElement> element;
+  Kinematics kinematics = Kinematics::kNonlinear;
+  std::vector<Support> supports;
+  Loads loads;  // of the case's `load` section at load factor 1; empty without one
+  // Whole-shell value = symmetry_factor * model value, for forces, reactions and energies
+  // (4 for a quarter model, else 1).
+  double symmetry_factor = 1;
+  std::vector<std::string> warnings;  // for the user (e.g. the bernstein4 patch-test defect)
+
+  int apex_node() const { return mesh.node_sets.at("apex").front(); }
+};
+
+// Throws an input error naming the case-file key for a case the model cannot represent: a
+// quarter model of a section that is not specially orthotropic in the model axes
+// (`mesh.symmetry`), an odd-sized or too coarse mesh, a simply supported curved edge.
+ShellModel build_shell_model(const CaseFile& c);
+
+// The mesh alone (the first step of build_shell_model).
+Mesh shell_mesh(const ShellSpec& shell, const MeshSpec& mesh);
+
+// The loads of a `load` section on a mesh built by shell_mesh (node set "apex"); a quarter
+// model (symmetry_factor 4) carries a quarter of the apex force.
+Loads shell_loads(const LoadSpec& load, double symmetry_factor);
+
+}  // namespace si

@@ -1,0 +1,146 @@
+#include "app/static_command.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <vector>
+
+#include "analysis/nodal_resultants.hpp"
+#include "analysis/shell_model.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/case_file.hpp"
+#include "io/vtu_writer.hpp"
+#include "model/static_solver.hpp"
+
+namespace si {
+namespace {
+
+// One row of the output, whole-shell values (a quarter model's forces and energy times 4).
+struct StaticRow {
+  double load_factor = 0;
+  double force = 0;       // N, applied, along -z (resultant of the nodal loads)
+  double deflection = 0;  // mm, apex, along -z
+  double energy = 0;      // N mm, strain energy
+  double reaction = 0;    // N, sum of the support reactions along +z
+  int iterations = 0;
+};
+
+StaticRow make_row(const StepResult& r, double factor) {
+  return StaticRow{r.load_factor,     -factor * r.applied_force.z(), -r.displacements[0].z(),
+                   factor * r.energy, factor * r.reaction_force.z(), r.iterations};
+}
+
+std::string format_row(const StaticRow& r) {
+  char line[200];
+  std::snprintf(line, sizeof line, "%8.4f %14.6g %14.6g %16.6g %14.6g %6d", r.load_factor, r.force,
+                r.deflection, r.energy, r.reaction, r.iterations);
+  return line;
+}
+
+std::string csv_text(const std::vector<StaticRow>& rows) {
+  std::ostringstream os;
+  os.precision(12);
+  os << "load_factor,force_N,apex_deflection_mm,strain_energy_Nmm,reaction_N,iterations\n";
+  for (const auto& r : rows)
+    os << r.load_factor << ',' << r.force << ',' << r.deflection << ',' << r.energy << ','
+       << r.reaction << ',' << r.iterations << '\n';
+  return os.str();
+}
+
+nlohmann::json json_of(const CaseFile& c, const ShellModel& m, const DofMap& dofs,
+                       const std::vector<StaticRow>& rows, const std::string& failure) {
+  nlohmann::json steps = nlohmann::json::array();
+  for (const auto& r : rows)
+    steps.push_back({{"load_factor", r.load_factor},
+                     {"force_N", r.force},
+                     {"apex_deflection_mm", r.deflection},
+                     {"strain_energy_Nmm", r.energy},
+                     {"reaction_N", r.reaction},
+                     {"iterations", r.iterations}});
+  return {{"case", c.file},
+          {"element", m.element->name()},
+          {"kinematics", m.kinematics == Kinematics::kLinear ? "linear" : "nonlinear"},
+          {"nodes", m.mesh.num_nodes()},
+          {"elements", m.mesh.num_elements()},
+          {"free_dofs", dofs.num_free()},
+          {"symmetry_factor", m.symmetry_factor},
+          {"note",
+           "whole-shell values: a quarter model's forces and energy are multiplied by 4; "
+           "force and deflection along -z, reaction along +z"},
+          {"status", failure.empty() ? "completed" : "failed"},
+          {"failure", failure},
+          {"steps", steps}};
+}
+
+void write_results(const std::filesystem::path& dir, const ShellModel& m,
+                   const Assembler& assembler, const std::vector<NodeState>* last_state,
+                   const std::string& csv, const std::string& json, std::ostream& err) {
+  write_file_atomically((dir / "static.csv").string(), csv);
+  write_file_atomically((dir / "static.json").string(), json);
+  err << "wrote " << (dir / "static.csv").string() << " and " << (dir / "static.json").string();
+  if (last_state != nullptr) {
+    const Eigen::MatrixXd resultants =
+        nodal_resultants(m.mesh, assembler, *m.element, m.law, *last_state);
+    VtuFields fields;
+    fields.point_data["N"] = resultants.leftCols(3);
+    fields.point_data["M"] = resultants.rightCols(3);
+    write_vtu((dir / "static.vtu").string(), m.mesh, *last_state, fields);
+    err << " and " << (dir / "static.vtu").string();
+  }
+  err << "\n";
+}
+
+}  // namespace
+
+int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::ostream& err) {
+  const CaseFile c = read_case_file(o.case_file);
+  if (!c.load)
+    throw_input("a static run needs a `load` section, e.g. load: {type: apex_force, force: 1 kN}",
+                Where{c.file, "load", "", 0});
+  const ShellModel m = build_shell_model(c);
+  for (const auto& w : m.warnings) err << "shellindent: warning: " << w << "\n";
+  const DofMap dofs = make_dof_map(m.mesh, m.supports);
+  StaticSettings settings;
+  settings.steps = c.load->steps;
+  settings.record_nodes = {m.apex_node()};
+  StaticSolver solver(m.mesh, dofs, *m.element, m.law, m.kinematics, m.loads, settings, o.threads);
+  err << "static: " << m.mesh.num_nodes() << " nodes, " << m.mesh.num_elements() << " "
+      << m.element->name() << " elements, " << dofs.num_free() << " free dofs, " << settings.steps
+      << " load steps\n";
+
+  std::vector<StaticRow> rows;
+  std::vector<NodeState> last_state;
+  const auto on_step = [&](const StepResult& r, const std::vector<NodeState>& s) {
+    rows.push_back(make_row(r, m.symmetry_factor));
+    last_state = s;
+    err << "step " << rows.size() << ": load factor " << r.load_factor << ", " << r.iterations
+        << " iterations, apex deflection " << rows.back().deflection << " mm\n";
+    return true;
+  };
+  std::vector<NodeState> state = reference_state(m.mesh);
+  std::string failure;
+  try {
+    solver.solve(state, on_step);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::kNumerical) throw;
+    failure = e.what();
+  }
+
+  out << "Static run of " << c.file << " (whole-shell values; force and apex deflection along -z)\n"
+      << "  lambda        force_N  deflection_mm  strain_energy_Nmm     reaction_N  iters\n";
+  for (const auto& r : rows) out << format_row(r) << "\n";
+
+  const std::filesystem::path dir = o.out_dir.empty() ? c.output.dir : o.out_dir;
+  const Assembler assembler(m.mesh, dofs, *m.element, m.law, m.kinematics, o.threads);
+  write_results(dir, m, assembler, rows.empty() ? nullptr : &last_state, csv_text(rows),
+                json_of(c, m, dofs, rows, failure).dump(2) + "\n", err);
+  if (failure.empty()) return 0;
+  err << "shellindent: error: the run stopped after " << rows.size() << " converged step(s)"
+      << (rows.empty() ? "" : " at load factor " + std::to_string(rows.back().load_factor)) << ": "
+      << failure << "\n";
+  return 1;
+}
+
+}  // namespace si

@@ -1,0 +1,129 @@
+// End-to-end tests of `shellindent static`: exit codes (0 ok, 2 bad input, 1 failed step), the
+// quarter-model refusal for an angle ply, the files written, the table and the progress lines.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "cli_test_support.hpp"
+
+namespace si {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::contains;
+using testing::fresh_dir;
+using testing::run_cli;
+
+// A coarse clamped isotropic plate under a centre force: a few hundred dofs, runs in well under
+// a second.
+std::string tiny_case(const std::string& layup, const std::string& symmetry,
+                      const std::string& kinematics, const std::string& material = "steel") {
+  return "material: " + material +
+         "\n"
+         "laminate: {layup: \"" +
+         layup +
+         "\", ply_thickness: 0.5 mm}\n"
+         "shell: {type: flat_circular_plate, radius: 25 mm, edge: clamped}\n"
+         "mesh: {size_apex: 4 mm, size_edge: 6 mm, refine_radius: 10 mm, symmetry: " +
+         symmetry + "}\nkinematics: " + kinematics +
+         "\nload: {type: apex_force, force: 100 N, steps: 2}\n";
+}
+
+fs::path write_case(const fs::path& dir, const std::string& text) {
+  const fs::path path = dir / "case.yaml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+TEST(StaticCommand, HelpNamesTheOutputs) {
+  const auto r = run_cli("static --help");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  for (const char* part : {"--out", "static.csv", "Example"})
+    EXPECT_TRUE(contains(r.output, part)) << part << "\n" << r.output;
+}
+
+TEST(StaticCommand, LinearRunWritesCsvJsonVtuAndTheTable) {
+  const fs::path dir = fresh_dir("static_ok");
+  const fs::path path = write_case(dir, tiny_case("[0]", "quarter", "linear"));
+  const auto r = run_cli("static '" + path.string() + "' --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* part : {"step 2: load factor 1", "deflection_mm", "strain_energy_Nmm"})
+    EXPECT_TRUE(contains(r.output, part)) << part << "\n" << r.output;
+  for (const char* file : {"static.csv", "static.json", "static.vtu"})
+    EXPECT_TRUE(fs::exists(dir / "out" / file)) << file;
+  const auto j = nlohmann::json::parse(read_text(dir / "out" / "static.json"));
+  EXPECT_EQ(j.at("status"), "completed");
+  ASSERT_EQ(j.at("steps").size(), 2u);
+  const auto& last = j.at("steps")[1];
+  // Whole-shell values of the quarter model: the applied force is the case's 100 N, and the
+  // supports carry it (linear run: to roundoff).
+  EXPECT_NEAR(last.at("force_N").get<double>(), 100.0, 1e-9);
+  EXPECT_NEAR(last.at("reaction_N").get<double>(), 100.0, 1e-6);
+  EXPECT_GT(last.at("apex_deflection_mm").get<double>(), 0.0);
+  const std::string vtu = read_text(dir / "out" / "static.vtu");
+  EXPECT_TRUE(contains(vtu, "Name=\"N\"")) << vtu.substr(0, 2000);
+  EXPECT_TRUE(contains(vtu, "Name=\"M\""));
+  EXPECT_EQ(read_text(dir / "out" / "static.csv").find("load_factor,force_N"), 0u);
+}
+
+TEST(StaticCommand, QuarterModelOfAnAnglePlyIsRefused) {
+  const fs::path dir = fresh_dir("static_quarter");
+  const fs::path path =
+      write_case(dir, tiny_case("[45/-45]2S", "quarter", "linear", "paper-carbon-epoxy"));
+  const auto r = run_cli("static '" + path.string() + "' --out '" + (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "mesh.symmetry")) << r.output;
+  EXPECT_TRUE(contains(r.output, "bending-twisting")) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(StaticCommand, CaseWithoutALoadSectionIsAnInputError) {
+  const fs::path dir = fresh_dir("static_noload");
+  const fs::path path = write_case(dir,
+                                   "material: steel\n"
+                                   "laminate: {layup: \"[0]\", ply_thickness: 1 mm}\n");
+  const auto r = run_cli("static '" + path.string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "load")) << r.output;
+}
+
+TEST(StaticCommand, Bernstein4RunsWithAWarning) {
+  const fs::path dir = fresh_dir("static_bernstein");
+  std::string text = tiny_case("[0]", "quarter", "linear");
+  text.replace(text.find("mesh: {"), 7, "mesh: {element: bernstein4, ");
+  const fs::path path = write_case(dir, text);
+  const auto r = run_cli("static '" + path.string() + "' --out '" + (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "warning: mesh.element = bernstein4")) << r.output;
+  EXPECT_TRUE(contains(r.output, "patch test")) << r.output;
+}
+
+TEST(StaticCommand, UnsupportedShellFailsNumericallyAndKeepsNoSteps) {
+  // A free edge leaves rigid-body motions: the tangent is singular at the first step (exit 1),
+  // and the (empty) step table is still written with the reason.
+  const fs::path dir = fresh_dir("static_free");
+  std::string text = tiny_case("[0]", "full", "linear");
+  text.replace(text.find("edge: clamped"), 13, "edge: free");
+  const fs::path path = write_case(dir, text);
+  const auto r = run_cli("static '" + path.string() + "' --out '" + (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_TRUE(contains(r.output, "stopped after 0 converged step")) << r.output;
+  const auto j = nlohmann::json::parse(read_text(dir / "out" / "static.json"));
+  EXPECT_EQ(j.at("status"), "failed");
+  EXPECT_TRUE(j.at("steps").empty());
+  EXPECT_FALSE(fs::exists(dir / "out" / "static.vtu"));
+}
+
+}  // namespace
+}  // namespace si
