@@ -322,7 +322,7 @@ void condense_eas_membrane(const Matrix8d& C, bool tangent, IntegrationPoints& i
     const Eigen::Matrix<double, kEasMembraneModes, 3> Gt = ip.dA[k] * p.G.transpose();
     H.noalias() += Gt * C.topLeftCorner<3, 3>() * p.G;
     b.noalias() += Gt * (C.topRows<3>() * p.E);
-    if (tangent) L.noalias() += Gt * (C.topRows<3>() * p.B);
+    if (tangent) L.noalias() += Gt.lazyProduct(C.topRows<3>() * p.B);
   }
   const Eigen::LLT<Eigen::Matrix4d> H_inv(H);
   if (H_inv.info() != Eigen::Success)
@@ -331,7 +331,9 @@ void condense_eas_membrane(const Matrix8d& C, bool tangent, IntegrationPoints& i
         "positive definite (H = int G^T A_mm G dA is singular)");
   const Eigen::Vector4d alpha = -H_inv.solve(b);
   for (int k = 0; k < ip.n; ++k) ip.point[k].E.head<3>() += ip.point[k].G * alpha;
-  if (tangent) K.noalias() -= L.transpose() * H_inv.solve(L);
+  if (!tangent) return;
+  const Eigen::Matrix<double, kEasMembraneModes, kShellElementDofs> H_inv_L = H_inv.solve(L);
+  K.noalias() -= L.transpose().lazyProduct(H_inv_L);
 }
 
 }  // namespace
