@@ -24,6 +24,7 @@ const Choices<ShellType> kShellTypes{{"spherical_cap", ShellType::kSphericalCap}
                                      {"rectangular_plate", ShellType::kRectangularPlate},
                                      {"cylindrical_panel", ShellType::kCylindricalPanel}};
 const Choices<ElementType> kElements{{"mitc4", ElementType::kMitc4},
+                                     {"mitc4-plain", ElementType::kMitc4Plain},
                                      {"bernstein4", ElementType::kBernstein4}};
 const Choices<Symmetry> kSymmetries{{"full", Symmetry::kFull}, {"quarter", Symmetry::kQuarter}};
 const Choices<Kinematics> kKinematics{{"linear", Kinematics::kLinear},

@@ -33,7 +33,9 @@ struct ShellSpec {
   EdgeCondition edge = EdgeCondition::kClamped;
 };
 
-enum class ElementType { kMitc4, kBernstein4 };
+// mitc4 = MITC4 + EAS-4 membrane (the default), mitc4-plain = MITC4 with the bilinear membrane,
+// bernstein4 = the paper's element (src/shell/shell_element.hpp).
+enum class ElementType { kMitc4, kMitc4Plain, kBernstein4 };
 
 // Mesh size grades from size_apex at the indentation point to size_edge beyond refine_radius.
 struct MeshSpec {

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "shell/eas_membrane.hpp"
 #include "shell/mitc4_tying.hpp"
 
 namespace si {
@@ -167,6 +168,13 @@ class Quad4Evaluation {
                   const std::array<NodeState, 4>& nodes)
       : options_(options), g_(g), nodes_(nodes) {
     for (int i = 0; i < 4; ++i) T_[i] << -nodes[i].v2, nodes[i].v1;
+    if (options.membrane == MembraneTreatment::kEas4) {
+      // Reference quantities only (X, D): the enhancement does not depend on q.
+      const LocalFrame centre =
+          local_frame(point_kinematics(options.shape, g, nodes, 0, 0), g.material_axis);
+      centre_membrane_map_ = centre.L.topLeftCorner<3, 3>();
+      centre_area_ = centre.area;
+    }
     if (options.shear != ShearTreatment::kMitc4) return;
     for (int t = 0; t < 4; ++t) {
       const TyingPoint& tp = kMitc4TyingPoints[t];
@@ -176,12 +184,14 @@ class Quad4Evaluation {
     }
   }
 
-  // Local strains E, their derivative B (= dE/dq), the covariant-to-local map and the point.
+  // Local strains E, their derivative B (= dE/dq), the covariant-to-local map and the point;
+  // G = the local membrane strains per EAS parameter (zero without enhancement).
   struct Point {
     PointKinematics kin;
     LocalFrame frame;
     Vector8d E;
     Matrix8x20d B;
+    EasModes G;
   };
 
   Point at(double xi, double eta) const {
@@ -197,6 +207,9 @@ class Quad4Evaluation {
     }
     out.E = out.frame.L * e;
     out.B = out.frame.L * B;
+    out.G = options_.membrane == MembraneTreatment::kEas4
+                ? eas4_membrane_modes(centre_membrane_map_, centre_area_ / out.frame.area, xi, eta)
+                : EasModes::Zero();
     return out;
   }
 
@@ -226,6 +239,8 @@ class Quad4Evaluation {
   RotationBases T_;
   TyingData tying_;
   Eigen::Vector4d tying_weight_ = Eigen::Vector4d::Zero();
+  Eigen::Matrix3d centre_membrane_map_ = Eigen::Matrix3d::Zero();  // M0 (eas_membrane.hpp)
+  double centre_area_ = 0;                                         // det J0
 };
 
 struct GaussRule {
@@ -269,10 +284,67 @@ Matrix8d law_matrix(const ShellLaw& law) {
   return C;
 }
 
+// The evaluated integration points of one call with their weights dA = w |X,xi x X,eta| (paper
+// eq 54). At most 4 x 4 points.
+struct IntegrationPoints {
+  int n = 0;
+  std::array<Quad4Evaluation::Point, 16> point;
+  std::array<double, 16> xi, eta, dA;
+};
+
+IntegrationPoints integration_points(const Quad4Evaluation& element, const GaussRule& rule) {
+  IntegrationPoints ip;
+  for (int i = 0; i < rule.n; ++i)
+    for (int j = 0; j < rule.n; ++j, ++ip.n) {
+      ip.xi[ip.n] = rule.x[i];
+      ip.eta[ip.n] = rule.x[j];
+      ip.point[ip.n] = element.at(rule.x[i], rule.x[j]);
+      ip.dA[ip.n] = rule.w[i] * rule.w[j] * ip.point[ip.n].frame.area;
+    }
+  return ip;
+}
+
+// Exact static condensation of the EAS membrane parameters (eas_membrane.hpp, quad4_shell.hpp).
+// The energy 1/2 sum (E + Gh alpha)^T C (E + Gh alpha) dA, Gh = [G; 0] (membrane rows only), is
+// W_c + alpha^T b + 1/2 alpha^T H alpha with H = sum G^T A_mm G dA and b = sum G^T (C E)_m dA,
+// where (C E)_m = A_mm e_m + A_mb kappa carries the membrane-bending coupling. Its minimum
+// alpha = -H^-1 b is added to the membrane strains of every point, which then give the energy
+// W_c - 1/2 b^T H^-1 b and (envelope theorem, dW/dalpha = 0) the force sum B^T C E dA. Since
+// dalpha/dq = -H^-1 L with L = db/dq = sum G^T (C B)_m dA, the tangent gains -L^T H^-1 L; the
+// geometric terms come with the enhanced resultants C E in compute_at_state.
+void condense_eas_membrane(const Matrix8d& C, bool tangent, IntegrationPoints& ip, Matrix20d& K) {
+  Eigen::Matrix4d H = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d b = Eigen::Vector4d::Zero();
+  Eigen::Matrix<double, kEasMembraneModes, kShellElementDofs> L;
+  L.setZero();
+  for (int k = 0; k < ip.n; ++k) {
+    const auto& p = ip.point[k];
+    const Eigen::Matrix<double, kEasMembraneModes, 3> Gt = ip.dA[k] * p.G.transpose();
+    H.noalias() += Gt * C.topLeftCorner<3, 3>() * p.G;
+    b.noalias() += Gt * (C.topRows<3>() * p.E);
+    if (tangent) L.noalias() += Gt.lazyProduct(C.topRows<3>() * p.B);
+  }
+  const Eigen::LLT<Eigen::Matrix4d> H_inv(H);
+  if (H_inv.info() != Eigen::Success)
+    throw_input(
+        "shell element with EAS membrane: the membrane stiffness A_R(0:3, 0:3) is not "
+        "positive definite (H = int G^T A_mm G dA is singular)");
+  const Eigen::Vector4d alpha = -H_inv.solve(b);
+  for (int k = 0; k < ip.n; ++k) ip.point[k].E.head<3>() += ip.point[k].G * alpha;
+  if (!tangent) return;
+  const Eigen::Matrix<double, kEasMembraneModes, kShellElementDofs> H_inv_L = H_inv.solve(L);
+  K.noalias() -= L.transpose().lazyProduct(H_inv_L);
+}
+
 }  // namespace
 
 Quad4Options mitc4_options() {
-  return {"mitc4", ShapeSet::kBilinear, ShearTreatment::kMitc4, 2};
+  return {"mitc4", ShapeSet::kBilinear, ShearTreatment::kMitc4, 2, MembraneTreatment::kEas4};
+}
+
+Quad4Options mitc4_plain_options() {
+  return {"mitc4-plain", ShapeSet::kBilinear, ShearTreatment::kMitc4, 2,
+          MembraneTreatment::kBilinear};
 }
 
 Quad4Options bernstein4_options() {
@@ -287,24 +359,24 @@ void Quad4Shell::compute_at_state(const ElementGeometry& geometry,
                                   const std::array<NodeState, 4>& nodes, const ShellLaw& law,
                                   const ElementRequest& request, ElementResponse& response) const {
   const Matrix8d C = law_matrix(law);
-  const GaussRule rule = gauss_rule(options_.gauss_points);
   Quad4Evaluation element(options_, geometry, nodes);
+  IntegrationPoints ip = integration_points(element, gauss_rule(options_.gauss_points));
   response.force.setZero();
   response.tangent.setZero();
   response.energy = 0;
-  for (int i = 0; i < rule.n; ++i) {
-    for (int j = 0; j < rule.n; ++j) {
-      const auto p = element.at(rule.x[i], rule.x[j]);
-      const double dA = rule.w[i] * rule.w[j] * p.frame.area;  // paper eq 54
-      const Vector8d S = C * p.E;                              // [N; Q], shell_law.hpp
-      response.energy += 0.5 * p.E.dot(S) * dA;
-      if (request.force) response.force.noalias() += dA * p.B.transpose() * S;
-      if (request.tangent) {
-        const Matrix8x20d CB = dA * C * p.B;
-        response.tangent.noalias() += p.B.transpose().lazyProduct(CB);
-        element.add_geometric(rule.x[i], rule.x[j], p.kin, dA * p.frame.L.transpose() * S,
-                              response.tangent);
-      }
+  if (options_.membrane == MembraneTreatment::kEas4)
+    condense_eas_membrane(C, request.tangent, ip, response.tangent);
+  for (int k = 0; k < ip.n; ++k) {
+    const auto& p = ip.point[k];
+    const double dA = ip.dA[k];
+    const Vector8d S = C * p.E;  // [N; Q], shell_law.hpp
+    response.energy += 0.5 * p.E.dot(S) * dA;
+    if (request.force) response.force.noalias() += dA * p.B.transpose() * S;
+    if (request.tangent) {
+      const Matrix8x20d CB = dA * C * p.B;
+      response.tangent.noalias() += p.B.transpose().lazyProduct(CB);
+      element.add_geometric(ip.xi[k], ip.eta[k], p.kin, dA * p.frame.L.transpose() * S,
+                            response.tangent);
     }
   }
   if (request.tangent) element.finish_geometric(response.tangent);

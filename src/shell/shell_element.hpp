@@ -1,4 +1,4 @@
-// The interface shared by all 4-node shell elements (mitc4, bernstein4, ...).
+// The interface shared by all 4-node shell elements (mitc4, mitc4-plain, bernstein4, ...).
 //
 // Dofs per node, in this order (kShellNodeDofs = 5):
 //   0..2  u1, u2, u3   displacement increment in global Cartesian axes (mm)
@@ -79,8 +79,10 @@ class ShellElement {
                                           Kinematics kinematics) const = 0;
 };
 
-// "mitc4" (default choice of the toolkit) or "bernstein4" (the source paper's element, kept to
-// reproduce and measure it). Unknown name -> input error listing the known names.
+// "mitc4" (default choice of the toolkit: MITC4 shear + EAS-4 membrane), "mitc4-plain" (MITC4
+// with the plain bilinear membrane, stiff in in-plane bending; kept for comparison) or
+// "bernstein4" (the source paper's element, kept to reproduce and measure it). Unknown name ->
+// input error listing the known names.
 std::unique_ptr<ShellElement> make_shell_element(const std::string& name);
 
 }  // namespace si

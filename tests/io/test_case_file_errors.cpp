@@ -190,8 +190,9 @@ TEST(CaseFileErrors, MalformedLayupInAPlyGroup) {
 }
 
 TEST(CaseFileErrors, UnknownElementListsTheAllowedOnes) {
-  expect_error(kHead + "mesh: {element: quad8}\n",
-               {"mesh.element", "quad8", 3, "unknown value; allowed: mitc4, bernstein4"});
+  expect_error(
+      kHead + "mesh: {element: quad8}\n",
+      {"mesh.element", "quad8", 3, "unknown value; allowed: mitc4, mitc4-plain, bernstein4"});
 }
 
 TEST(CaseFileErrors, MisspeltEdgeSuggestsTheClosest) {
