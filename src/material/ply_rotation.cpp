@@ -23,10 +23,7 @@ Matrix6d rotate_stiffness_voigt(const Matrix6d& C_material, double angle_deg) {
 
 Matrix6d voigt_to_yu(const Matrix6d& C_voigt) {
   static constexpr int p[6] = {0, 5, 1, 4, 3, 2};
-  Matrix6d out;
-  for (int i = 0; i < 6; ++i)
-    for (int j = 0; j < 6; ++j) out(i, j) = C_voigt(p[i], p[j]);
-  return out;
+  return permuted(C_voigt, p);
 }
 
 Matrix6d ply_stiffness_yu(const Matrix6d& C_material, double angle_deg) {

@@ -42,10 +42,7 @@ Matrix6d clt_abd(const Laminate& laminate) {
 
 Matrix6d swap_yu_conventional_order(const Matrix6d& abd) {
   static constexpr int p[6] = {0, 2, 1, 3, 5, 4};
-  Matrix6d out;
-  for (int i = 0; i < 6; ++i)
-    for (int j = 0; j < 6; ++j) out(i, j) = abd(p[i], p[j]);
-  return out;
+  return permuted(abd, p);
 }
 
 bool is_specially_orthotropic(const Matrix6d& abd, double rel_tol) {
