@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
 
 #include "core/error.hpp"
 #include "model/cylindrical_panel_mesh.hpp"
@@ -64,7 +66,64 @@ Mesh panel_mesh(const ShellSpec& shell, const MeshSpec& spec) {
 }
 
 std::string element_name(ElementType type) {
-  return type == ElementType::kBernstein4 ? "bernstein4" : "mitc4";
+  switch (type) {
+    case ElementType::kMitc4:
+      return "mitc4";
+    case ElementType::kMitc4Plain:
+      return "mitc4-plain";
+    case ElementType::kBernstein4:
+      return "bernstein4";
+  }
+  return "mitc4";
+}
+
+// Element count of the requested mesh, from above (the graded disk meshes have size_apex
+// within refine_radius and size_edge outside it), so that an absurd size is refused before the
+// generator tries to allocate it.
+double estimated_element_count(const ShellSpec& shell, const MeshSpec& mesh) {
+  switch (shell.type) {
+    case ShellType::kSphericalCap:
+    case ShellType::kFlatCircularPlate: {
+      const double r = shell.type == ShellType::kSphericalCap ? shell.base_radius : shell.radius;
+      const double inner = std::min(mesh.refine_radius, r);
+      // Cap surface area exceeds its plan area by at most a factor 2 (hemisphere).
+      return 2.0 * kPi *
+             (inner * inner / (mesh.size_apex * mesh.size_apex) +
+              r * r / (mesh.size_edge * mesh.size_edge));
+    }
+    case ShellType::kRectangularPlate:
+      return shell.length_x * shell.length_y / (mesh.size_apex * mesh.size_apex);
+    case ShellType::kCylindricalPanel:
+      return shell.radius * shell.angle_deg * kPi / 180.0 * shell.length /
+             (mesh.size_apex * mesh.size_apex);
+  }
+  return 0;
+}
+
+constexpr double kMaxElements = 4e6;  // ~1e8 dofs: beyond any 24 GB machine's direct solver
+
+void check_mesh_size(const CaseFile& c) {
+  const double n = estimated_element_count(c.shell, c.mesh);
+  if (n > kMaxElements) {
+    std::ostringstream os;
+    os << "this element size asks for about " << std::llround(n) << " elements, more than the "
+       << kMaxElements << " a direct solver can handle on one machine; use a larger size";
+    throw_input(os.str(),
+                Where{c.file, "mesh.size_apex", std::to_string(c.mesh.size_apex) + " mm", 0});
+  }
+}
+
+// The mesh generators name their own parameters (size_apex, base_radius, ...); report them with
+// the case file and the dotted key the user wrote.
+Mesh shell_mesh_in_case(const CaseFile& c) {
+  try {
+    return shell_mesh(c.shell, c.mesh);
+  } catch (const Error& e) {
+    const std::string& key = e.where().key;
+    const bool mesh_key = key.rfind("size_", 0) == 0 || key == "refine_radius";
+    const std::string path = key.empty() ? "" : (mesh_key ? "mesh." : "shell.") + key;
+    throw Error(e.kind(), e.reason(), Where{c.file, path, e.where().value, 0});
+  }
 }
 
 void check_quarter_symmetry(const CaseFile& c, const Matrix6d& A_R) {
@@ -106,7 +165,10 @@ std::vector<Support> edge_supports(const CaseFile& c) {
       break;
     }
     case EdgeCondition::kFree:
-      break;
+      throw_input(
+          "a free edge leaves the shell without supports (free rigid-body motion); use clamped, "
+          "hinged or simply_supported",
+          Where{c.file, "shell.edge", "free", 0});
   }
   if (quarter) {
     supports.push_back({SupportKind::kSymmetryPlane, "symmetry_x", 0, {}});
@@ -158,7 +220,8 @@ ShellModel build_shell_model(const CaseFile& c) {
   check_quarter_symmetry(c, vam.A_R);
   model.law.A_R = vam.A_R;
   model.law.G = vam.G;
-  model.mesh = shell_mesh(c.shell, c.mesh);
+  check_mesh_size(c);
+  model.mesh = shell_mesh_in_case(c);
   if (c.shell.edge == EdgeCondition::kSimplySupported && c.mesh.symmetry == Symmetry::kFull) {
     // Rim node of largest x (on the positive x axis for the plates).
     const auto& edge = model.mesh.node_sets.at("edge");

@@ -1,5 +1,7 @@
 #include "app/static_command.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -98,6 +100,19 @@ void write_results(const std::filesystem::path& dir, const ShellModel& m,
   err << "\n";
 }
 
+bool on_nominal_grid(double load_factor, int steps) {
+  const double k = load_factor * steps;
+  return std::abs(k - std::round(k)) < 1e-9 * steps;
+}
+
+void prepare_output_directory(const std::filesystem::path& dir, const Where& where) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw_input("cannot use this output directory" + (ec ? ": " + ec.message() : std::string()),
+                where);
+}
+
 }  // namespace
 
 int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::ostream& err) {
@@ -107,6 +122,13 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
                 Where{c.file, "load", "", 0});
   const ShellModel m = build_shell_model(c);
   for (const auto& w : m.warnings) err << "shellindent: warning: " << w << "\n";
+  // The output directory is made (and checked) once the input is valid and before the run, so
+  // that a long run cannot be lost to a bad --out at the end.
+  const std::filesystem::path dir = o.out_dir.empty() ? c.output.dir : o.out_dir;
+  prepare_output_directory(dir, o.out_dir.empty()
+                                    ? Where{c.file, "output.dir", dir.string(), 0}
+                                    : Where{"command line", "--out", dir.string(), 0});
+
   const DofMap dofs = make_dof_map(m.mesh, m.supports);
   StaticSettings settings;
   settings.steps = c.load->steps;
@@ -121,8 +143,18 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   const auto on_step = [&](const StepResult& r, const std::vector<NodeState>& s) {
     rows.push_back(make_row(r, m.symmetry_factor));
     last_state = s;
+    const StaticRow& row = rows.back();
     err << "step " << rows.size() << ": load factor " << r.load_factor << ", " << r.iterations
-        << " iterations, apex deflection " << rows.back().deflection << " mm\n";
+        << " iterations, apex deflection " << row.deflection << " mm"
+        << (on_nominal_grid(r.load_factor, settings.steps)
+                ? ""
+                : " (step cut back after a failed attempt)")
+        << "\n";
+    // Reactions must balance the load; an element that cannot represent rigid-body motion
+    // (bernstein4) or a too-loose tolerance shows here first.
+    if (std::abs(row.reaction - row.force) > 1e-6 * std::max(std::abs(row.force), 1e-300))
+      err << "shellindent: warning: reactions " << row.reaction << " N do not balance the applied "
+          << row.force << " N: the results are not in equilibrium\n";
     return true;
   };
   std::vector<NodeState> state = reference_state(m.mesh);
@@ -130,6 +162,9 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   try {
     solver.solve(state, on_step);
   } catch (const Error& e) {
+    // Input errors raised inside the run come from the elements (a degenerate element).
+    if (e.kind() == ErrorKind::kInput)
+      throw e.within(Where{c.file, "mesh.element", m.element->name(), 0});
     if (e.kind() != ErrorKind::kNumerical) throw;
     failure = e.what();
   }
@@ -138,7 +173,6 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
       << "  lambda        force_N  deflection_mm  strain_energy_Nmm     reaction_N  iters\n";
   for (const auto& r : rows) out << format_row(r) << "\n";
 
-  const std::filesystem::path dir = o.out_dir.empty() ? c.output.dir : o.out_dir;
   const Assembler assembler(m.mesh, dofs, *m.element, m.law, m.kinematics, o.threads);
   write_results(dir, m, assembler, rows.empty() ? nullptr : &last_state, csv_text(rows),
                 json_of(c, m, dofs, rows, failure).dump(2) + "\n", err);

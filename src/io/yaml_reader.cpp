@@ -43,8 +43,8 @@ std::string text_of(const YAML::Node& node) {
 }
 
 std::string read_scalar(const YAML::Node& node, const Where& where) {
-  if (!node.IsScalar() || node.Scalar().empty())
-    throw_input("expected a single value, got " + kind_of(node), where);
+  if (!node.IsScalar()) throw_input("expected a single value, got " + kind_of(node), where);
+  if (node.Scalar().empty()) throw_input("expected a value, got an empty string", where);
   return node.Scalar();
 }
 

@@ -138,5 +138,35 @@ TEST(ShellModel, Bernstein4CarriesAPatchTestWarning) {
   EXPECT_NE(m.warnings[0].find("patch test"), std::string::npos);
 }
 
+void expect_refused(const std::string& body, const std::string& key) {
+  try {
+    build(body);
+    ADD_FAILURE() << "accepted:\n" << body;
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::kInput) << e.what();
+    EXPECT_EQ(e.where().file, "model.yaml") << e.what();
+    EXPECT_EQ(e.where().key, key) << e.what();
+  }
+}
+
+TEST(ShellModel, MeshGeneratorErrorsNameTheCaseKey) {
+  expect_refused("mesh: {size_apex: 3 mm, size_edge: 1 mm}\n", "mesh.size_apex");
+  expect_refused("shell: {type: spherical_cap, base_radius: 80.9 mm, radius: 80.9 mm}\n",
+                 "shell.base_radius");
+}
+
+TEST(ShellModel, AbsurdMeshSizeIsRefusedBeforeMeshing) {
+  // 1e-6 mm over a 25 mm cap would be ~1e15 elements: refused, not attempted.
+  expect_refused("mesh: {size_apex: 0.000001 mm}\n", "mesh.size_apex");
+}
+
+TEST(ShellModel, EveryElementChoiceReachesTheModel) {
+  for (const char* name : {"mitc4", "mitc4-plain", "bernstein4"}) {
+    const ShellModel m = build(std::string("mesh: {element: ") + name +
+                               ", size_apex: 2 mm, size_edge: 4 mm, symmetry: quarter}\n");
+    EXPECT_EQ(m.element->name(), name);
+  }
+}
+
 }  // namespace
 }  // namespace si

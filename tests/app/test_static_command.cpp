@@ -111,20 +111,44 @@ TEST(StaticCommand, Bernstein4RunsWithAWarning) {
   EXPECT_TRUE(contains(r.output, "patch test")) << r.output;
 }
 
-TEST(StaticCommand, UnsupportedShellFailsNumericallyAndKeepsNoSteps) {
-  // A free edge leaves rigid-body motions: the tangent is singular at the first step (exit 1),
-  // and the (empty) step table is still written with the reason.
+TEST(StaticCommand, FreeEdgeIsRefusedBeforeTheRun) {
+  // A free edge is the only edge condition of the schema and leaves rigid-body motions.
   const fs::path dir = fresh_dir("static_free");
   std::string text = tiny_case("[0]", "full", "linear");
   text.replace(text.find("edge: clamped"), 13, "edge: free");
   const fs::path path = write_case(dir, text);
   const auto r = run_cli("static '" + path.string() + "' --out '" + (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "shell.edge = 'free'")) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(StaticCommand, NonConvergedRunExitsOneAndWritesWhereItStopped) {
+  // A 0.04 mm thick cap under 50 kN: far beyond its collapse load, so load control cannot
+  // converge; the run must stop with exit 1, say where and why, and keep its steps table.
+  const fs::path dir = fresh_dir("static_fail");
+  const fs::path path = write_case(dir,
+                                   "material: paper-carbon-epoxy\n"
+                                   "laminate: {layup: \"[0/90]S\", ply_thickness: 0.01 mm}\n"
+                                   "mesh: {size_apex: 2 mm, size_edge: 4 mm, symmetry: quarter}\n"
+                                   "load: {type: apex_force, force: 50 kN, steps: 3}\n");
+  const auto r = run_cli("static '" + path.string() + "' --out '" + (dir / "out").string() + "'");
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_TRUE(contains(r.output, "stopped after 0 converged step")) << r.output;
+  EXPECT_TRUE(contains(r.output, "the run stopped after")) << r.output;
+  EXPECT_TRUE(contains(r.output, "no convergence")) << r.output;
   const auto j = nlohmann::json::parse(read_text(dir / "out" / "static.json"));
   EXPECT_EQ(j.at("status"), "failed");
-  EXPECT_TRUE(j.at("steps").empty());
-  EXPECT_FALSE(fs::exists(dir / "out" / "static.vtu"));
+  EXPECT_FALSE(j.at("failure").get<std::string>().empty());
+}
+
+TEST(StaticCommand, OutputDirectoryThatIsAFileIsRefusedBeforeTheRun) {
+  const fs::path dir = fresh_dir("static_outfile");
+  const fs::path path = write_case(dir, tiny_case("[0]", "quarter", "linear"));
+  { std::ofstream(dir / "afile") << "x"; }
+  const auto r = run_cli("static '" + path.string() + "' --out '" + (dir / "afile").string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "--out")) << r.output;
+  EXPECT_FALSE(contains(r.output, "step 1")) << r.output;
 }
 
 }  // namespace
