@@ -7,6 +7,7 @@
 #include "core/units.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
+#include "io/laminate_reader.hpp"
 #include "io/section_report.hpp"
 #include "material/material_library.hpp"
 #include "section/layup_notation.hpp"
@@ -26,17 +27,6 @@ Laminate laminate_from_notation(const std::string& notation, const Material& mat
   for (double angle : parse_layup(notation))
     lam.plies.push_back(Ply{material, ply_thickness, angle});
   return lam;
-}
-
-double reference_offset(const std::string& text, double thickness) {
-  if (text == "mid") return 0.0;
-  if (text == "bottom") return -0.5 * thickness;
-  if (text == "top") return 0.5 * thickness;
-  try {
-    return parse_quantity(text, Dimension::kLength);
-  } catch (const Error& e) {
-    throw e.within(option_where("--reference", text));
-  }
 }
 
 SectionProperties section_from_options(const SectionCommandOptions& o) {
@@ -65,9 +55,8 @@ SectionProperties section_from_options(const SectionCommandOptions& o) {
   } catch (const Error& e) {
     throw e.within(option_where("--layup", o.layup));
   }
-  lam.reference_offset = reference_offset(o.reference, lam.thickness());
   try {
-    lam.validate();
+    lam.reference_offset = parse_reference_surface(o.reference, lam.thickness());
   } catch (const Error& e) {
     throw e.within(option_where("--reference", o.reference));
   }

@@ -67,6 +67,12 @@ std::string join(const std::vector<std::string>& parts) {
   return out;
 }
 
+// "a length", "an angle": for messages.
+std::string with_article(Dimension dim) {
+  const std::string name = dimension_name(dim);
+  return (std::string("aeiou").find(name[0]) != std::string::npos ? "an " : "a ") + name;
+}
+
 const UnitDef* find_unit(const std::string& symbol) {
   for (const auto& u : kUnits)
     if (symbol == u.symbol) return &u;
@@ -121,7 +127,7 @@ std::vector<std::string> accepted_units(Dimension dim) {
 double parse_quantity(std::string_view text_in, Dimension dim) {
   const std::string text = trim(text_in);
   const Where where{"", "", text, 0};
-  if (text.empty()) throw_input("empty value; expected a " + dimension_name(dim), where);
+  if (text.empty()) throw_input("empty value; expected " + with_article(dim), where);
 
   const char* begin = text.c_str();
   char* end = nullptr;
@@ -129,7 +135,7 @@ double parse_quantity(std::string_view text_in, Dimension dim) {
   const double number = std::strtod(begin, &end);
   if (end == begin) {
     throw_input(
-        "not a number; expected a " + dimension_name(dim) +
+        "not a number; expected " + with_article(dim) +
             (dim == Dimension::kDimensionless ? "" : " such as '1 " + internal_unit(dim) + "'"),
         where);
   }
@@ -147,14 +153,13 @@ double parse_quantity(std::string_view text_in, Dimension dim) {
   }
   const UnitDef* def = find_unit(unit);
   if (def == nullptr) {
-    throw_input("unknown unit '" + unit + "' for a " + dimension_name(dim) +
+    throw_input("unknown unit '" + unit + "' for " + with_article(dim) +
                     " (accepted: " + join(accepted_units(dim)) + ")",
                 where);
   }
   if (def->dim != dim) {
-    throw_input("wrong unit: '" + unit + "' is a " + dimension_name(def->dim) +
-                    " unit, expected a " + dimension_name(dim) +
-                    " (accepted: " + join(accepted_units(dim)) + ")",
+    throw_input("wrong unit: '" + unit + "' is " + with_article(def->dim) + " unit, expected " +
+                    with_article(dim) + " (accepted: " + join(accepted_units(dim)) + ")",
                 where);
   }
   return number * def->to_internal;

@@ -285,7 +285,13 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
     root = YAML::Load(yaml_text);
   } catch (const YAML::ParserException& e) {
     const int line = e.mark.line >= 0 ? e.mark.line + 1 : 0;
-    throw_input("invalid YAML: " + e.msg, Where{file_label, "", line_text(yaml_text, line), line});
+    // yaml-cpp's messages do not say that tabs are not allowed for indentation: a common slip.
+    const bool has_tab = yaml_text.find('\t') != std::string::npos;
+    throw_input("invalid YAML: " + e.msg +
+                    (has_tab ? " (the file contains tab characters; YAML indentation must use "
+                               "spaces)"
+                             : ""),
+                Where{file_label, "", line_text(yaml_text, line), line});
   }
   if (root.IsNull()) throw_input("the case file is empty", Where{file_label, "", "", 0});
   const MapReader top(root, Where{file_label, "", "", 0});

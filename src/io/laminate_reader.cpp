@@ -61,25 +61,11 @@ std::vector<Ply> read_ply_list(const MapReader& laminate, const MaterialTable& m
 // Offset of the reference surface above the mid-surface for a laminate of thickness h.
 double read_reference(const MapReader& laminate, double h) {
   if (!laminate.has("reference")) return 0.0;
-  const std::string text = laminate.scalar("reference");
-  if (text == "mid") return 0.0;
-  if (text == "bottom") return -0.5 * h;
-  if (text == "top") return 0.5 * h;
-  const Where where = laminate.where("reference");
-  double offset = 0;
   try {
-    offset = parse_quantity(text, Dimension::kLength);
+    return parse_reference_surface(laminate.scalar("reference"), h);
   } catch (const Error& e) {
-    throw_input("expected mid, bottom, top or a length above the mid-surface such as '0.2 mm' (" +
-                    e.reason() + ")",
-                where);
+    throw e.within(laminate.where("reference"));
   }
-  if (std::abs(offset) > 0.5 * h) {
-    throw_input("the reference surface must lie within the laminate: |offset| <= h/2 = " +
-                    format_quantity(0.5 * h, Dimension::kLength),
-                where);
-  }
-  return offset;
 }
 
 }  // namespace
@@ -104,6 +90,24 @@ Laminate read_laminate(const YAML::Node& node, const Where& context,
     throw e.within(map.where());
   }
   return laminate;
+}
+
+double parse_reference_surface(const std::string& text, double h) {
+  if (text == "mid") return 0.0;
+  if (text == "bottom") return -0.5 * h;
+  if (text == "top") return 0.5 * h;
+  double offset = 0;
+  try {
+    offset = parse_quantity(text, Dimension::kLength);
+  } catch (const Error& e) {
+    throw_input("expected mid, bottom, top or a length above the mid-surface such as '0.2 mm' (" +
+                e.reason() + ")");
+  }
+  if (std::abs(offset) > 0.5 * h) {
+    throw_input("the reference surface must lie within the laminate: |offset| <= h/2 = " +
+                format_quantity(0.5 * h, Dimension::kLength));
+  }
+  return offset;
 }
 
 }  // namespace si

@@ -8,6 +8,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <string>
+
 #include "core/error.hpp"
 #include "io/material_reader.hpp"
 #include "section/laminate.hpp"
@@ -17,5 +19,10 @@ namespace si {
 // Builds and validates the laminate found at `context` (file, key "laminate", line).
 Laminate read_laminate(const YAML::Node& node, const Where& context,
                        const MaterialTable& materials);
+
+// The reference-surface offset above the mid-surface (mm) named by `text` for a laminate of
+// thickness h: mid, bottom, top or a length. Throws an input si::Error without location (the
+// caller adds the file/option and key) if the text is none of these or lies outside the laminate.
+double parse_reference_surface(const std::string& text, double h);
 
 }  // namespace si
