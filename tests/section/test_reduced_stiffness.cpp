@@ -13,27 +13,9 @@ namespace {
 using testing::max_abs;
 using testing::paper_material;
 
-// Textbook Q-bar, vam.md section 10.1 (Jones 1999, eqs. 2.85 and 2.86), written out here as the
-// independent reference, in Yu order [11, 12, 22].
-Matrix3d textbook_qbar(const EngineeringConstants& c, double angle_deg) {
-  const double nu21 = c.nu12 * c.E2 / c.E1;
-  const double den = 1.0 - c.nu12 * nu21;
-  const double Q11 = c.E1 / den, Q22 = c.E2 / den, Q12 = c.nu12 * c.E2 / den, Q66 = c.G12;
-  const double th = angle_deg * M_PI / 180.0;
-  const double co = std::cos(th), si = std::sin(th);
-  const double c2 = co * co, s2 = si * si, c4 = c2 * c2, s4 = s2 * s2;
-  const double q11 = Q11 * c4 + 2 * (Q12 + 2 * Q66) * s2 * c2 + Q22 * s4;
-  const double q22 = Q11 * s4 + 2 * (Q12 + 2 * Q66) * s2 * c2 + Q22 * c4;
-  const double q12 = (Q11 + Q22 - 4 * Q66) * s2 * c2 + Q12 * (s4 + c4);
-  const double q66 = (Q11 + Q22 - 2 * Q12 - 2 * Q66) * s2 * c2 + Q66 * (s4 + c4);
-  const double q16 = (Q11 - Q12 - 2 * Q66) * si * c2 * co + (Q12 - Q22 + 2 * Q66) * s2 * si * co;
-  const double q26 = (Q11 - Q12 - 2 * Q66) * s2 * si * co + (Q12 - Q22 + 2 * Q66) * si * c2 * co;
-  Matrix3d Q;
-  Q << q11, q16, q12,  //
-      q16, q66, q26,   //
-      q12, q26, q22;
-  return Q;
-}
+// The textbook Q-bar of vam.md 10.1 (Jones 1999, eqs. 2.85-2.86) is the independent reference:
+// testing::clt_reduced_stiffness in laminate_fixtures.hpp.
+using testing::clt_reduced_stiffness;
 
 // vam.md 5.2: for monoclinic plies the Schur complement of the 3-D stiffness equals the
 // textbook rotated plane-stress Q-bar of 10.1. Round-off only: 1e-12 of the largest entry.
@@ -41,7 +23,7 @@ TEST(ReducedStiffness, EqualsTextbookQbar_VamSection10_1) {
   const Material m = paper_material();
   for (double angle : {0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 90.0, -30.0}) {
     const Matrix3d Q = reduced_stiffness(Ply{m, 0.475, angle});
-    const Matrix3d ref = textbook_qbar(m.constants(), angle);
+    const Matrix3d ref = clt_reduced_stiffness(m.constants(), angle);
     EXPECT_LE(max_abs(Q - ref), 1e-12 * max_abs(ref)) << "angle " << angle << "\n" << Q;
   }
 }
