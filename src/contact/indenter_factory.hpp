@@ -1,0 +1,16 @@
+// Builds the indenter a case file asks for (src/io/case_file.hpp IndenterSpec) at a pose.
+#pragma once
+
+#include <memory>
+
+#include "contact/indenter.hpp"
+#include "io/case_file.hpp"
+
+namespace si {
+
+// Throws an input Error naming `indenter.<key>` for invalid values or combinations (a
+// non-positive radius, an edge radius outside [0, radius), exponents outside (0, 2], a zero
+// direction of travel, a cylinder axis parallel to the direction).
+std::unique_ptr<Indenter> make_indenter(const IndenterSpec& spec, const IndenterPose& pose);
+
+}  // namespace si
