@@ -1,0 +1,71 @@
+// Additive coordinates for the shell's free dofs ("chart"), so that KINSOL and the continuation
+// library, which add vectors, can work on a shell whose rotations compose multiplicatively.
+//
+// Coordinates x (one per free dof, DofMap equation order): the translations u (mm) and, per
+// node, the components (a, b) of a rotation vector theta = a V1 + b V2 on the node's REFERENCE
+// axes; the node's frame is exp(skew(theta)) applied to its reference frame (D, V1, V2). This is
+// exactly the state the element's linear mode reads back (shell_element.hpp) and the one
+// rotate_node(reference, a, b) gives, and it covers every director with |theta| < pi.
+//
+// The assembled tangent K is the derivative of the residual r (rotation rows = components of the
+// nodal moment on the CURRENT v1, v2) with respect to increments q about the current axes
+// (director.hpp). The derivative with respect to the chart is then (Simo & Vu-Quoc 1986, the
+// tangent of the exponential map)
+//     dr/dx = K T(x) + D(x, r),
+// where, per node, omega = J(theta) [V1 V2] (da, db) is the spatial angular velocity of a chart
+// increment (J = the left Jacobian of SO(3)), T = [v1 v2]^T J [V1 V2] is its projection on the
+// current axes, and D is the drilling part omega . d, which turns the current axes about d and
+// so changes the rotation rows' components: d r_1 = (omega.d) r_2, d r_2 = -(omega.d) r_1.
+// D vanishes at equilibrium; T is the identity at theta = 0.
+#pragma once
+
+#include <vector>
+
+#include "model/dof_map.hpp"
+#include "model/linear_solver.hpp"
+#include "model/mesh.hpp"
+#include "shell/director.hpp"
+
+namespace si {
+
+class ShellChart {
+ public:
+  // Keeps references to mesh and dof map.
+  ShellChart(const Mesh& mesh, const DofMap& dofs);
+
+  int size() const { return dofs_.num_free(); }
+
+  // Node states at chart point x; prescribed translations at prescribed_scale * value,
+  // prescribed rotation components at zero.
+  void states(const Eigen::VectorXd& x, double prescribed_scale, std::vector<NodeState>& out) const;
+
+  // The chart point of a state (inverse of states(); the drilling orientation of v1, v2 is
+  // ignored). Throws if a node has rotated by pi or more, or about its director.
+  Eigen::VectorXd coordinates(const std::vector<NodeState>& state) const;
+
+  // In place: K (its first num_free() columns are the shell's free dofs, in equation order; it
+  // may have more rows and columns, e.g. Lagrange multipliers) becomes K T(x), then the drilling
+  // term D(x, r) is added to the shell's rotation rows. r is the residual at x restricted to the
+  // free dofs (rotation rows on the current axes). The two rotation columns of a node must have
+  // the same sparsity pattern (true for assembled shell blocks), and the node's diagonal 2x2
+  // rotation block must be in the pattern.
+  void to_chart_jacobian(const Eigen::VectorXd& x, const Eigen::VectorXd& r, SparseMatrix& K) const;
+
+ private:
+  struct NodeRotation {
+    int node = 0;
+    int eq_a = -1, eq_b = -1;  // equations of the rotation dofs, -1 if prescribed
+  };
+  Vector3d theta(const Eigen::VectorXd& x, const NodeRotation& r) const;
+
+  const Mesh& mesh_;
+  const DofMap& dofs_;
+  std::vector<NodeState> reference_;
+  std::vector<NodeRotation> rotations_;  // nodes with at least one free rotation dof
+};
+
+// The left Jacobian of SO(3): exp(skew(theta + dtheta)) = exp(skew(J dtheta)) exp(skew(theta))
+// to first order. J = I + (1 - cos t)/t^2 S + (t - sin t)/t^3 S^2, S = skew(theta), t = |theta|.
+Matrix3d so3_left_jacobian(const Vector3d& theta);
+
+}  // namespace si
