@@ -1,0 +1,42 @@
+#include "continuation/problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace si::cont {
+
+bool Problem::residual_p(const Vector& x, double p, Vector& out) {
+  const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(p));
+  Vector f_plus;
+  Vector f_minus;
+  if (!residual(x, p + h, f_plus) || !residual(x, p - h, f_minus)) return false;
+  out = (f_plus - f_minus) / (2.0 * h);
+  return true;
+}
+
+double Problem::inner(const Vector& a, const Vector& b) const {
+  return a.dot(b);
+}
+
+std::vector<std::string> Problem::monitor_names() const {
+  return {};
+}
+
+Vector Problem::monitors(const Vector& /*x*/, double /*p*/) {
+  return Vector();
+}
+
+std::vector<int> Problem::signature(const Vector& /*x*/, double /*p*/) {
+  return {};
+}
+
+int Problem::jacobian_sign() const {
+  return 0;
+}
+
+bool Problem::adapt(Vector& /*x*/, double /*p*/) {
+  return false;
+}
+
+}  // namespace si::cont

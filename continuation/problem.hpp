@@ -1,0 +1,60 @@
+// The generic continuation problem: a residual F(x, p) = 0 in n unknowns x and one parameter p,
+// with its Jacobian dF/dx factored and solved by the problem itself (the library never sees a
+// matrix), dF/dp, and optional extras (inner product, monitors, a discrete signature, a
+// determinant sign, adaptation). The shape follows pacopy/LOCA: the library knows "a problem",
+// nothing about shells. Theory: docs/theory/continuation.md.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace si::cont {
+
+using Vector = Eigen::VectorXd;
+
+class Problem {
+ public:
+  virtual ~Problem() = default;
+  virtual int size() const = 0;
+
+  // F(x, p) into F (resized by the callee). false = cannot evaluate here (e.g. an inverted
+  // element): recoverable, the step is retried smaller.
+  virtual bool residual(const Vector& x, double p, Vector& F) = 0;
+
+  // Linearise dF/dx at (x, p) and factor it. false = failure (singular...) -> recoverable.
+  virtual bool factorize(const Vector& x, double p) = 0;
+
+  // Solve (dF/dx) y = b in place with the last factorization. false = failure.
+  virtual bool solve(Vector& b) = 0;
+
+  // dF/dp at (x, p); default: central finite difference of residual() with the relative step
+  // h = eps^(1/3) max(1, |p|), which balances the O(h^2) truncation against O(eps/h) roundoff.
+  virtual bool residual_p(const Vector& x, double p, Vector& out);
+
+  // Inner product used by the arclength constraint and norms; default a.dot(b). It must be
+  // symmetric positive definite and linear (the bordered solve relies on linearity).
+  virtual double inner(const Vector& a, const Vector& b) const;
+
+  // Named scalar monitors at a solution (force, curvatures...) for events and output; default
+  // none. Monitors must be smooth functions of (x, p) near the branch: their derivatives along
+  // the branch are taken by finite differences off the branch (docs/theory/continuation.md).
+  virtual std::vector<std::string> monitor_names() const;
+  virtual Vector monitors(const Vector& x, double p);
+
+  // A discrete signature (e.g. the contact set) whose change between accepted points is an
+  // event; default empty.
+  virtual std::vector<int> signature(const Vector& x, double p);
+
+  // Sign of det(dF/dx) from the last factorize() (+1/-1), 0 = unknown (the default). Used only
+  // by the optional bifurcation indicator.
+  virtual int jacobian_sign() const;
+
+  // Called after each accepted point. The problem may change its size (e.g. grow a contact
+  // candidate set) and map x to the new size in place; return true if it did (the library then
+  // recomputes the tangent at that point, the previous secant/tangent being invalid).
+  virtual bool adapt(Vector& x, double p);
+};
+
+}  // namespace si::cont

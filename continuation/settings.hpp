@@ -1,0 +1,99 @@
+// Settings of the Newton corrector and of a continuation run. One struct each, validated by
+// validate() (every entry point calls it first): errors throw std::invalid_argument naming the
+// field and its value, e.g. "continuation.step_min = 2 > step_max = 1".
+// Meaning of every field: docs/theory/continuation.md.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace si::cont {
+
+// The KINSOL Newton corrector (kinsol_corrector.hpp). Convergence: ||F||_inf <= tol with
+// tol = relative_tolerance * max(||F(x_start)||_inf, residual_scale).
+struct NewtonSettings {
+  double relative_tolerance = 1e-10;
+  // Absolute floor of the tolerance, in units of F: the magnitude of the terms of F that cancel
+  // at a solution (e.g. the external load). It keeps the tolerance above roundoff when the
+  // starting residual is already small (a good predictor). 0 = purely relative (solve_at only).
+  double residual_scale = 1.0;
+  int max_iterations = 15;
+  bool line_search = true;
+  // Largest Newton step (L2 norm of the update); 0 = 1000 * max(1, ||x_start||_2). KINSOL's own
+  // default is 1 when x_start = 0, which truncates steps (docs/toolchain.md §3 pitfall 2).
+  double max_step = 0.0;
+
+  void validate(const std::string& prefix = "newton") const;
+};
+
+enum class Method { kNatural, kPseudoArclength };
+enum class Predictor { kTangent, kSecant };
+
+// "natural" | "pseudo_arclength"; throws std::invalid_argument for anything else.
+Method parse_method(const std::string& name);
+std::string method_name(Method method);
+// "tangent" | "secant"; throws std::invalid_argument for anything else.
+Predictor parse_predictor(const std::string& name);
+std::string predictor_name(Predictor predictor);
+
+// Inflection of monitor `monitor` plotted against monitor `against` (sign change of
+// d2(monitor)/d(against)^2), e.g. the paper's critical force: T_N against k11.
+struct InflectionPair {
+  std::string monitor;
+  std::string against;
+};
+
+struct Settings {
+  Method method = Method::kPseudoArclength;
+  Predictor predictor = Predictor::kTangent;
+  // Initial direction: the sign of dp along the first tangent (+1 or -1). Later steps are
+  // oriented by the previous tangent, never by the previous parameter increment.
+  int direction = 1;
+
+  // Step sizes: arclength for pseudo_arclength (in the norm sqrt(<dx,dx> + w^2 dp^2)), |dp| for
+  // natural.
+  double step_initial = 1e-2;
+  double step_min = 1e-8;
+  double step_max = 1.0;
+  // Step adaptation after a converged step: ds *= clamp(target / iterations, 1/2, growth_max).
+  int target_iterations = 4;
+  double step_growth_max = 2.0;
+  // A failed step is retried with ds / 2 down to step_min; a failure at step_min ends the run.
+  // A step whose tangent turned by more than this is treated as failed (guards against jumping
+  // to another branch).
+  double max_turn_deg = 60.0;
+
+  // Parameter bounds: the run stops at the bound, located exactly (the last point has p = bound).
+  double p_min = -std::numeric_limits<double>::infinity();
+  double p_max = std::numeric_limits<double>::infinity();
+  int max_steps = 1000;
+  // Weight w of the parameter in the arclength norm (its unit against x's inner product).
+  double parameter_weight = 1.0;
+
+  NewtonSettings newton;
+
+  // natural only: strictly increasing parameter values hit exactly (substeps allowed); the run
+  // completes at the last one. Must lie in the direction of travel from p0.
+  std::vector<double> parameter_values;
+
+  // Events (events.hpp), located to event_tolerance in arclength (|dp| for natural).
+  bool detect_limit_points = true;
+  std::vector<std::string> extremum_monitors;
+  std::vector<std::string> zero_crossing_monitors;
+  std::vector<InflectionPair> inflections;
+  bool detect_signature_changes = true;
+  bool locate_signature_changes = true;
+  bool detect_bifurcations = false;  // needs Problem::jacobian_sign()
+  double event_tolerance = 1e-8;
+  int event_max_iterations = 80;
+
+  // Checkpoints (checkpoint.hpp): written atomically every checkpoint_interval accepted steps
+  // and at the end of the run; empty path = none.
+  std::string checkpoint_path;
+  int checkpoint_interval = 0;
+
+  void validate() const;
+};
+
+}  // namespace si::cont

@@ -1,0 +1,114 @@
+// The KINSOL corrector on its own (solve_at at a fixed parameter).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "continuation/kinsol_corrector.hpp"
+#include "dense_test_problems.hpp"
+
+namespace si::cont {
+namespace {
+
+NewtonSettings tight_settings() {
+  NewtonSettings s;
+  s.relative_tolerance = 1e-13;
+  s.residual_scale = 0.0;
+  return s;
+}
+
+// Observed order of convergence from three successive residual norms.
+double observed_order(double r0, double r1, double r2) {
+  return std::log(r2 / r1) / std::log(r1 / r0);
+}
+
+// Newton's method converges quadratically near a regular root (Dennis & Schnabel 1996,
+// Thm 5.2.1): the observed order log(r_{k+1}/r_k) / log(r_k/r_{k-1}) tends to 2.
+void expect_quadratic(bool line_search) {
+  test::CoupledProblem problem(4);
+  const double p = 1.0;
+  Vector x = Vector::Constant(4, 1.2);
+  NewtonSettings settings = tight_settings();
+  settings.line_search = line_search;
+  const NewtonResult result = solve_at(problem, x, p, settings);
+  ASSERT_TRUE(result.converged) << result.reason;
+  EXPECT_EQ(result.flag_name, "KIN_SUCCESS");
+  EXPECT_LE(result.iterations, 10);
+  Vector F;
+  problem.residual(x, p, F);
+  EXPECT_LE(F.lpNorm<Eigen::Infinity>(), result.tolerance);
+
+  const auto& r = result.residual_norms;
+  ASSERT_EQ(static_cast<int>(r.size()), result.iterations + 1);
+  // Best order over the iterates still above roundoff (1e-12 here: F's terms are O(1-10)).
+  double best = 0.0;
+  for (std::size_t k = 2; k < r.size(); ++k)
+    if (r[k] > 1e-12 && r[k - 1] < 1e-1)
+      best = std::max(best, observed_order(r[k - 2], r[k - 1], r[k]));
+  EXPECT_GT(best, 1.8) << "residual history does not show quadratic convergence";
+}
+
+TEST(ContKinsolCorrector, QuadraticConvergenceWithLineSearch) {
+  expect_quadratic(true);
+}
+
+TEST(ContKinsolCorrector, QuadraticConvergenceWithoutLineSearch) {
+  expect_quadratic(false);
+}
+
+TEST(ContKinsolCorrector, ExactStartNeedsNoIteration) {
+  test::CircleProblem circle;
+  Vector x{{0.6}};
+  const NewtonResult result = solve_at(circle, x, 0.8, tight_settings());
+  EXPECT_TRUE(result.converged);
+  EXPECT_EQ(result.iterations, 0);
+}
+
+// x^2 + p^2 = 1 has no real root at p = 2: the solve fails with a reason, quietly.
+TEST(ContKinsolCorrector, NoRootFailsWithReasonAndNoStderr) {
+  test::CircleProblem circle;
+  Vector x{{0.5}};
+  NewtonSettings settings = tight_settings();
+  settings.max_iterations = 30;
+  testing::internal::CaptureStderr();
+  const NewtonResult result = solve_at(circle, x, 2.0, settings);
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_FALSE(result.converged);
+  EXPECT_FALSE(result.reason.empty());
+  EXPECT_NE(result.flag_name, "KIN_SUCCESS");
+  EXPECT_TRUE(err.empty()) << "stderr: " << err;
+}
+
+// A residual that cannot be evaluated is a recoverable failure, reported, not thrown.
+class Unevaluable final : public test::DenseProblem {
+ public:
+  int size() const override { return 1; }
+  bool residual(const Vector& x, double, Vector& F) override {
+    F = Vector::Constant(1, x(0) - 1.0);
+    return x(0) < 0.5;  // the root x = 1 is out of reach
+  }
+  test::Matrix jacobian(const Vector&, double) const override { return test::Matrix::Ones(1, 1); }
+};
+
+TEST(ContKinsolCorrector, UnevaluableResidualIsAFailureNotAThrow) {
+  Unevaluable problem;
+  Vector x{{0.0}};
+  testing::internal::CaptureStderr();
+  NewtonResult result;
+  EXPECT_NO_THROW(result = solve_at(problem, x, 0.0, tight_settings()));
+  testing::internal::GetCapturedStderr();
+  EXPECT_FALSE(result.converged);
+  EXPECT_FALSE(result.reason.empty());
+  Vector y{{3.0}};
+  result = solve_at(problem, y, 0.0, tight_settings());
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.reason, "the residual cannot be evaluated at the starting point");
+}
+
+TEST(ContKinsolCorrector, SizeMismatchThrows) {
+  test::CoupledProblem problem(3);
+  Vector x = Vector::Zero(2);
+  EXPECT_THROW(solve_at(problem, x, 0.0, tight_settings()), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace si::cont
