@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "model/cholmod_solver.hpp"
+#include "model/klu_solver.hpp"
 #include "model/umfpack_solver.hpp"
 
 namespace si {
@@ -11,7 +12,8 @@ namespace si {
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name) {
   if (name == "cholmod") return std::make_unique<CholmodSolver>();
   if (name == "umfpack") return std::make_unique<UmfpackSolver>();
-  throw_input("unknown linear solver (expected cholmod or umfpack)",
+  if (name == "klu") return std::make_unique<KluSolver>();
+  throw_input("unknown linear solver (expected cholmod, umfpack or klu)",
               Where{"", "linear_solver", name, 0});
 }
 

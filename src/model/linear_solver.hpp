@@ -33,7 +33,8 @@ class LinearSolver {
   virtual double rcond() const = 0;
 };
 
-// "cholmod" (SPD, supernodal Cholesky) or "umfpack" (general LU). Unknown name: input error.
+// "cholmod" (SPD, supernodal Cholesky), "umfpack" or "klu" (general LU). Unknown name: input
+// error.
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name);
 
 // The message every solver uses when the matrix turns out singular.

@@ -23,12 +23,12 @@ SparseMatrix plate_tangent(const std::vector<Support>& supports, int n = 10) {
   return a.tangent;
 }
 
-TEST(LinearSolver, CholmodAndUmfpackAgree) {
+TEST(LinearSolver, CholmodUmfpackAndKluAgree) {
   const SparseMatrix K = plate_tangent({{SupportKind::kClamped, "left", -1, {}}});
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.rows(), -1.0, 2.0);
-  Eigen::VectorXd x[2];
+  Eigen::VectorXd x[3];
   int i = 0;
-  for (const char* name : {"cholmod", "umfpack"}) {
+  for (const char* name : {"cholmod", "umfpack", "klu"}) {
     auto solver = make_linear_solver(name);
     EXPECT_EQ(solver->name(), name);
     solver->analyze(K);
@@ -43,12 +43,13 @@ TEST(LinearSolver, CholmodAndUmfpackAgree) {
     ++i;
   }
   EXPECT_LT((x[0] - x[1]).norm(), 1e-12 * x[0].norm()) << (x[0] - x[1]).norm() / x[0].norm();
+  EXPECT_LT((x[0] - x[2]).norm(), 1e-12 * x[0].norm()) << (x[0] - x[2]).norm() / x[0].norm();
 }
 
 // No supports: three free translations. Both solvers must say so, not return garbage.
 TEST(LinearSolver, SingularFreeBodyIsReportedClearly) {
   const SparseMatrix K = plate_tangent({}, 6);
-  for (const char* name : {"cholmod", "umfpack"}) {
+  for (const char* name : {"cholmod", "umfpack", "klu"}) {
     auto solver = make_linear_solver(name);
     solver->analyze(K);
     try {
@@ -69,7 +70,7 @@ TEST(LinearSolver, UnknownNameIsAnInputError) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::kInput);
-    EXPECT_NE(std::string(e.what()).find("cholmod or umfpack"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("cholmod, umfpack or klu"), std::string::npos);
   }
 }
 

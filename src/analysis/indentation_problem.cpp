@@ -1,0 +1,426 @@
+#include "analysis/indentation_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "analysis/nodal_resultants.hpp"
+#include "contact/travel_gap.hpp"
+#include "core/error.hpp"
+#include "model/supports.hpp"
+
+namespace si {
+
+// Value slots in the Jacobian of one candidate's entries (-1 where a dof is prescribed).
+struct IndentationProblem::CandidateSlots {
+  std::array<int, 5> eq{};      // equations of the node's 5 dofs
+  std::array<int, 25> block{};  // (eq[r], eq[c]) at 5 r + c
+  std::array<int, 5> column{};  // (eq[r], multiplier)
+  std::array<int, 5> row{};     // (multiplier, eq[c])
+  int diagonal = -1;            // (multiplier, multiplier)
+};
+
+namespace {
+
+// A gap this large stands for "beside the indenter's path": phi then pins lambda to zero.
+constexpr double kFarGap = 1e6;  // mm
+
+int value_slot(const SparseMatrix& J, int row, int col) {
+  const int* begin = J.innerIndexPtr() + J.outerIndexPtr()[col];
+  const int* end = J.innerIndexPtr() + J.outerIndexPtr()[col + 1];
+  const int* it = std::lower_bound(begin, end, row);
+  SI_REQUIRE(it != end && *it == row, "indentation Jacobian: entry missing from the pattern");
+  return static_cast<int>(it - J.innerIndexPtr());
+}
+
+}  // namespace
+
+double contact_face_offset(const CaseFile& c) {
+  const double top = 0.5 * c.laminate.thickness() - c.laminate.reference_offset;
+  return c.contact.surface == ContactSurface::kOuter ? top : -c.laminate.reference_offset;
+}
+
+IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& indenter,
+                                       const Vector3d& direction, IndentationOptions options)
+    : model_(model),
+      indenter_(indenter),
+      direction_(direction.normalized()),
+      options_(std::move(options)),
+      dofs_(make_dof_map(model.mesh, model.supports)),
+      assembler_(model.mesh, dofs_, *model.element, model.law, model.kinematics, options_.threads),
+      assembly_(assembler_.make_assembly()),
+      chart_(model.mesh, dofs_) {
+  const Mesh& mesh = model.mesh;
+  const int nn = mesh.num_nodes();
+  geometry_.resize(nn);
+  std::vector<Vector3d> points(nn);
+  for (int n = 0; n < nn; ++n) {
+    geometry_[n] = {mesh.nodes[n], options_.contact_offset};
+    points[n] = mesh.nodes[n] + options_.contact_offset * mesh.directors[n];
+  }
+  double touch = 0;
+  try {
+    touch = indenter.first_touch(points);
+  } catch (const Error& e) {
+    throw_input(
+        "the indenter never touches the shell along its direction of travel (" + e.reason() + ")",
+        Where{"", "indenter", indenter.name(), 0});
+  }
+  if (touch < 0)
+    throw_input("the indenter starts inside the shell (it would have touched it " +
+                    std::to_string(-touch) + " mm before its start position)",
+                Where{"", "indenter", indenter.name(), 0});
+
+  // Exact touch travels of the reachable nodes; t0 = the smallest.
+  std::vector<int> reachable;
+  std::vector<double> travel;
+  for (int n = 0; n < nn; ++n) {
+    const TravelGap g = travel_gap(indenter, direction_, points[n], touch, false);
+    if (g.hits && g.travel - touch <= options_.candidate_depth) {
+      reachable.push_back(n);
+      travel.push_back(g.travel);
+    }
+  }
+  SI_REQUIRE(!reachable.empty(), "indentation: no node within reach of the indenter");
+  t0_ = *std::min_element(travel.begin(), travel.end());
+
+  tributary_area_.assign(nn, 0.0);
+  neighbours_.assign(nn, {});
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    const double a = element_area(mesh, e) / 4;
+    for (int i = 0; i < 4; ++i) {
+      const int n = mesh.elements[e][i];
+      tributary_area_[n] += a;
+      for (int j = 0; j < 4; ++j)
+        if (j != i) neighbours_[n].push_back(mesh.elements[e][j]);
+    }
+  }
+  for (auto& v : neighbours_) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+  }
+
+  // The reference tangent: kappa, and K itself for linear kinematics.
+  assembler_.assemble(reference_state(mesh), ElementRequest{true, true}, assembly_);
+  const int apex = model.apex_node();
+  Matrix3d Ka = Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const int ei = dofs_.equation(DofMap::dof(apex, i)),
+                ej = dofs_.equation(DofMap::dof(apex, j));
+      if (ei >= 0 && ej >= 0) Ka(i, j) = assembly_.tangent.coeff(ei, ej);
+    }
+  kappa_ = direction_.dot(Ka * direction_);
+  SI_REQUIRE(kappa_ > 0, "indentation: the apex has no stiffness along the direction of travel");
+  if (model.kinematics == Kinematics::kLinear) linear_tangent_ = assembly_.tangent;
+
+  choose_candidates(reachable);
+}
+
+IndentationProblem::~IndentationProblem() = default;
+
+void IndentationProblem::choose_candidates(const std::vector<int>& nodes) {
+  candidates_ = nodes;
+  touch_guess_.assign(candidates_.size(), t0_);
+  build_pattern();
+}
+
+void IndentationProblem::build_pattern() {
+  const int nf = chart_.size(), nc = static_cast<int>(candidates_.size());
+  const SparseMatrix& K = assembly_.tangent;
+  std::vector<Eigen::Triplet<double, int>> t;
+  t.reserve(K.nonZeros() + 36 * nc);
+  for (int j = 0; j < K.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it) t.emplace_back(it.row(), j, 0.0);
+  slots_.assign(nc, {});
+  for (int i = 0; i < nc; ++i) {
+    const int n = candidates_[i], m = nf + i;
+    for (int l = 0; l < 5; ++l) slots_[i].eq[l] = dofs_.equation(DofMap::dof(n, l));
+    for (int r : slots_[i].eq) {
+      if (r < 0) continue;
+      t.emplace_back(r, m, 0.0);
+      t.emplace_back(m, r, 0.0);
+      for (int c : slots_[i].eq)
+        if (c >= 0) t.emplace_back(r, c, 0.0);
+    }
+    t.emplace_back(m, m, 0.0);
+  }
+  jacobian_ = SparseMatrix(nf + nc, nf + nc);
+  jacobian_.setFromTriplets(t.begin(), t.end());
+  jacobian_.makeCompressed();
+
+  k_to_j_.resize(K.nonZeros());
+  for (int j = 0; j < K.outerSize(); ++j)
+    for (int k = K.outerIndexPtr()[j]; k < K.outerIndexPtr()[j + 1]; ++k)
+      k_to_j_[k] = value_slot(jacobian_, K.innerIndexPtr()[k], j);
+  for (int i = 0; i < nc; ++i) {
+    CandidateSlots& s = slots_[i];
+    const int m = nf + i;
+    for (int r = 0; r < 5; ++r) {
+      s.column[r] = s.eq[r] >= 0 ? value_slot(jacobian_, s.eq[r], m) : -1;
+      s.row[r] = s.eq[r] >= 0 ? value_slot(jacobian_, m, s.eq[r]) : -1;
+      for (int c = 0; c < 5; ++c)
+        s.block[5 * r + c] =
+            s.eq[r] >= 0 && s.eq[c] >= 0 ? value_slot(jacobian_, s.eq[r], s.eq[c]) : -1;
+    }
+    s.diagonal = value_slot(jacobian_, m, m);
+  }
+  solver_ = make_linear_solver(options_.linear_solver);
+  analyzed_ = false;
+}
+
+int IndentationProblem::size() const {
+  return chart_.size() + static_cast<int>(candidates_.size());
+}
+
+cont::Vector IndentationProblem::initial_point() const {
+  return cont::Vector::Zero(size());
+}
+
+std::vector<NodeState> IndentationProblem::node_states(const cont::Vector& z) const {
+  std::vector<NodeState> s;
+  chart_.states(z.head(chart_.size()), 1.0, s);
+  return s;
+}
+
+NodeGap IndentationProblem::gap(int i, const std::vector<NodeState>& s, double h,
+                                bool derivative) const {
+  const int n = candidates_[i];
+  const double travel = t0_ + h;
+  NodeGap g;
+  if (model_.kinematics == Kinematics::kLinear) {
+    Vector5d q = Vector5d::Zero();
+    for (int l = 0; l < 3; ++l) q[l] = s[n].u[l];
+    // The chart coordinates of the node (theta on the reference axes); prescribed ones are 0.
+    const NodeState ref = reference_node_state(model_.mesh.directors[n]);
+    const Vector3d axis = ref.d.cross(s[n].d);
+    const double angle = std::atan2(axis.norm(), ref.d.dot(s[n].d));
+    if (axis.norm() > 0) {
+      const Vector3d theta = axis.normalized() * angle;
+      q[3] = theta.dot(ref.v1);
+      q[4] = theta.dot(ref.v2);
+    }
+    g = linearized_node_gap(indenter_, direction_, geometry_[n], ref, q, travel);
+  } else {
+    g = node_gap(indenter_, direction_, geometry_[n], s[n], travel, touch_guess_[i], derivative);
+  }
+  if (g.hits) {
+    touch_guess_[i] = g.touch_travel;
+  } else {
+    g.gap = kFarGap;
+  }
+  return g;
+}
+
+// r_free = r(x) - sum lambda_i G_i on the free dofs; the assembly (and its tangent if asked)
+// is left in assembly_ (nonlinear kinematics).
+void IndentationProblem::shell_terms(const cont::Vector& z, double h, bool tangent,
+                                     cont::Vector& r_free) {
+  const int nf = chart_.size();
+  chart_.states(z.head(nf), 1.0, scratch_states_);
+  if (model_.kinematics == Kinematics::kLinear) {
+    r_free = linear_tangent_ * z.head(nf);
+  } else {
+    assembler_.assemble(scratch_states_, ElementRequest{true, tangent}, assembly_);
+    r_free = dofs_.restrict_to_free(assembly_.internal_force);
+  }
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const double lambda = z[nf + static_cast<int>(i)];
+    if (lambda == 0.0) continue;
+    const NodeGap g = gap(static_cast<int>(i), scratch_states_, h, false);
+    for (int l = 0; l < 5; ++l)
+      if (slots_[i].eq[l] >= 0) r_free[slots_[i].eq[l]] -= lambda * g.gradient[l];
+  }
+  (void)h;
+}
+
+bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector& F) {
+  const int nf = chart_.size();
+  cont::Vector r;
+  try {
+    shell_terms(z, h, false, r);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::kNumerical) throw;
+    return false;
+  }
+  F.resize(size());
+  F.head(nf) = r;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const NodeGap g = gap(static_cast<int>(i), scratch_states_, h, false);
+    F[nf + static_cast<int>(i)] =
+        ncp(options_.ncp, z[nf + static_cast<int>(i)], kappa_ * g.gap).value;
+  }
+  return F.allFinite();
+}
+
+bool IndentationProblem::factorize(const cont::Vector& z, double h) {
+  const int nf = chart_.size();
+  cont::Vector r_free;
+  try {
+    shell_terms(z, h, true, r_free);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::kNumerical) throw;
+    return false;
+  }
+  const SparseMatrix& K =
+      model_.kinematics == Kinematics::kLinear ? linear_tangent_ : assembly_.tangent;
+  double* J = jacobian_.valuePtr();
+  std::fill(J, J + jacobian_.nonZeros(), 0.0);
+  for (int k = 0; k < K.nonZeros(); ++k) J[k_to_j_[k]] = K.valuePtr()[k];
+  const bool nonlinear = model_.kinematics == Kinematics::kNonlinear;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const double lambda = z[nf + static_cast<int>(i)];
+    const NodeGap g = gap(static_cast<int>(i), scratch_states_, h, nonlinear && lambda != 0.0);
+    const NcpValue phi = ncp(options_.ncp, lambda, kappa_ * g.gap);
+    const CandidateSlots& s = slots_[i];
+    for (int r = 0; r < 5; ++r) {
+      if (s.eq[r] < 0) continue;
+      J[s.column[r]] -= g.gradient[r];
+      J[s.row[r]] += phi.d_b * kappa_ * g.gradient[r];
+      if (nonlinear && lambda != 0.0)
+        for (int c = 0; c < 5; ++c)
+          if (s.eq[c] >= 0) J[s.block[5 * r + c]] -= lambda * g.gradient_derivative(r, c);
+    }
+    J[s.diagonal] += phi.d_a;
+  }
+  if (nonlinear) chart_.to_chart_jacobian(z.head(nf), r_free, jacobian_);
+  try {
+    if (!analyzed_) {
+      solver_->analyze(jacobian_);
+      analyzed_ = true;
+    }
+    solver_->factorize(jacobian_);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::kNumerical) throw;
+    return false;
+  }
+  return true;
+}
+
+bool IndentationProblem::solve(cont::Vector& b) {
+  b = solver_->solve(b);
+  return b.allFinite();
+}
+
+// Only the gaps depend on h, through g = s(p) - t0 - h.
+bool IndentationProblem::residual_p(const cont::Vector& z, double h, cont::Vector& out) {
+  const int nf = chart_.size();
+  std::vector<NodeState> s = node_states(z);
+  out = cont::Vector::Zero(size());
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const NodeGap g = gap(static_cast<int>(i), s, h, false);
+    if (!g.hits) continue;
+    const NcpValue phi = ncp(options_.ncp, z[nf + static_cast<int>(i)], kappa_ * g.gap);
+    out[nf + static_cast<int>(i)] = -phi.d_b * kappa_;
+  }
+  return true;
+}
+
+double IndentationProblem::force_scale(const cont::Vector& z) const {
+  const double force = z.tail(candidates_.size()).sum() * model_.symmetry_factor;
+  return std::max(std::abs(force), kappa_ * 1e-3);
+}
+
+std::vector<std::string> IndentationProblem::monitor_names() const {
+  return {"force_N",    "apex_w_mm",  "contact_radius_mm", "energy_Nmm",
+          "k11_per_mm", "k12_per_mm", "k22_per_mm"};
+}
+
+cont::Vector IndentationProblem::monitors(const cont::Vector& z, double h) {
+  const IndentationState s = evaluate(z, h);
+  cont::Vector m(7);
+  m << s.force, s.apex_deflection, s.contact_radius, s.energy, s.apex_curvature[0],
+      s.apex_curvature[1], s.apex_curvature[2];
+  return m;
+}
+
+std::vector<int> IndentationProblem::signature(const cont::Vector& z, double h) {
+  const int nf = chart_.size();
+  const std::vector<NodeState> s = node_states(z);
+  std::vector<int> active(candidates_.size());
+  for (std::size_t i = 0; i < candidates_.size(); ++i)
+    active[i] = z[nf + static_cast<int>(i)] > kappa_ * gap(static_cast<int>(i), s, h, false).gap;
+  return active;
+}
+
+bool IndentationProblem::adapt(cont::Vector& z, double h) {
+  const int nf = chart_.size();
+  const std::vector<NodeState> s = node_states(z);
+  const std::set<int> current(candidates_.begin(), candidates_.end());
+  std::set<int> added;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    if (!(z[nf + static_cast<int>(i)] > 0)) continue;
+    for (int nb : neighbours_[candidates_[i]]) {
+      if (current.count(nb) || added.count(nb)) continue;
+      const Vector3d p = geometry_[nb].X + s[nb].u + geometry_[nb].offset * s[nb].d;
+      const TravelGap g = travel_gap(indenter_, direction_, p, t0_ + h, false);
+      if (g.hits && g.travel - t0_ - h <= options_.candidate_depth) added.insert(nb);
+    }
+  }
+  if (added.empty()) return false;
+  const cont::Vector lambda = z.tail(candidates_.size());
+  std::vector<int> nodes = candidates_;
+  nodes.insert(nodes.end(), added.begin(), added.end());
+  const std::vector<double> guesses = touch_guess_;
+  choose_candidates(nodes);
+  std::copy(guesses.begin(), guesses.end(), touch_guess_.begin());
+  cont::Vector grown = cont::Vector::Zero(size());
+  grown.head(nf) = z.head(nf);
+  grown.segment(nf, lambda.size()) = lambda;
+  z = grown;
+  return true;
+}
+
+IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
+  const Mesh& mesh = model_.mesh;
+  const int nf = chart_.size();
+  const double sym = model_.symmetry_factor;
+  IndentationState out;
+  out.depth = h;
+  const std::vector<NodeState> s = node_states(z);
+  Assembly a = assembler_.make_assembly();
+  assembler_.assemble(s, ElementRequest{true, false}, a);
+  out.energy = sym * a.energy;
+  const Eigen::VectorXd reaction =
+      reactions(dofs_, a.internal_force, Eigen::VectorXd::Zero(dofs_.num_dofs()));
+  Vector3d total = Vector3d::Zero();
+  for (int n = 0; n < mesh.num_nodes(); ++n) total += reaction.segment<3>(kShellNodeDofs * n);
+  out.reaction = -sym * total.dot(direction_);
+
+  const int apex = model_.apex_node();
+  out.apex_deflection = s[apex].u.dot(direction_);
+  const Eigen::MatrixXd strains = nodal_strains(mesh, assembler_, *model_.element, s);
+  out.apex_curvature = strains.row(apex).segment<3>(3).transpose();
+
+  const double lambda_max = z.tail(candidates_.size()).cwiseAbs().maxCoeff();
+  const Vector3d axis_point = mesh.nodes[apex];
+  out.min_gap = std::numeric_limits<double>::infinity();
+  out.min_multiplier = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const int n = candidates_[i];
+    const double lambda = z[nf + static_cast<int>(i)];
+    const NodeGap g = gap(static_cast<int>(i), s, h, false);
+    out.nodes.push_back(n);
+    out.multipliers.push_back(lambda);
+    out.gaps.push_back(g.hits ? g.gap : std::numeric_limits<double>::infinity());
+    out.pressures.push_back(lambda / tributary_area_[n]);
+    out.force += lambda;
+    out.min_multiplier = std::min(out.min_multiplier, lambda);
+    if (g.hits) {
+      out.min_gap = std::min(out.min_gap, g.gap);
+      out.max_complementarity = std::max(out.max_complementarity, std::abs(lambda * g.gap));
+    }
+    if (lambda > 1e-9 * lambda_max && lambda > 0) {
+      ++out.contact_nodes;
+      out.contact_area += sym * tributary_area_[n];
+      const Vector3d p = mesh.nodes[n] + s[n].u - axis_point;
+      out.contact_radius =
+          std::max(out.contact_radius, (p - p.dot(direction_) * direction_).norm());
+    }
+  }
+  out.force *= sym;
+  return out;
+}
+
+}  // namespace si

@@ -1,0 +1,136 @@
+// The indentation problem as a continuation problem in the depth h (continuation/problem.hpp):
+// a rigid indenter moves along its direction of travel e by t0 + h, t0 its first touch of the
+// shell's contact face, and presses the shell frictionlessly (paper eqs 20-23, 72-80; P6, P7).
+//
+// Unknowns z = [x ; lambda]: x the shell's chart coordinates (model/shell_chart.hpp; for linear
+// kinematics the element's linear-mode dofs, the same numbers) and lambda >= 0 one Lagrange
+// multiplier per candidate node: its contact force along e, N (contact/node_gap.hpp).
+// Equations:
+//     r(x) - sum_i lambda_i G_i(x) = 0               equilibrium (free dofs)
+//     phi(lambda_i, kappa g_i(x, h)) = 0             complementarity, per candidate
+// with g_i the gap along the direction of travel (travel_gap.hpp), G_i its gradient in the
+// node's dofs, phi the Fischer-Burmeister function (or min, for the active-set cross-check),
+// kappa a stiffness scale (the apex's translational stiffness along e, N/mm) that makes
+// lambda and kappa g comparable. The Jacobian is exact (generalised, at the kinks of phi):
+//     [ K - sum lambda_i dG_i    -G ]      then, for nonlinear kinematics, the chart transform
+//     [ phi_b kappa G^T        phi_a ]      K T + D of shell_chart.hpp on the shell columns.
+// Linear kinematics: K, G and the gap are those of the reference state (linearised gap,
+// node_gap.hpp), so the only nonlinearity is phi; this is the paper's linear setting.
+//
+// Candidates: the nodes whose contact point the indenter can reach within `candidate_depth` of
+// travel past first touch (reference configuration). adapt() grows the set when a node in
+// contact has a neighbour outside it that the indenter can now reach within that depth.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/shell_model.hpp"
+#include "contact/indenter.hpp"
+#include "contact/ncp_function.hpp"
+#include "contact/node_gap.hpp"
+#include "continuation/problem.hpp"
+#include "model/assembler.hpp"
+#include "model/dof_map.hpp"
+#include "model/linear_solver.hpp"
+#include "model/shell_chart.hpp"
+
+namespace si {
+
+struct IndentationOptions {
+  double contact_offset = 0;    // c: contact face above the reference surface along d, mm
+  double candidate_depth = 12;  // mm of travel past first touch (see the header)
+  NcpFunction ncp = NcpFunction::kFischerBurmeister;
+  std::string linear_solver = "umfpack";  // "umfpack" | "klu" (the Jacobian is unsymmetric)
+  int threads = 0;                        // element assembly (0 = OpenMP default)
+};
+
+// Everything a user wants at one converged point (whole-shell values: symmetry applied).
+struct IndentationState {
+  double depth = 0;            // h, mm
+  double force = 0;            // T_N = sum of multipliers, N
+  double reaction = 0;         // support reactions along -e, N (equals force at equilibrium)
+  double apex_deflection = 0;  // apex mid-surface displacement along e, mm
+  double contact_radius = 0;   // largest distance from the indenter's axis of a node in contact
+  double contact_area = 0;     // tributary area of the nodes in contact, mm^2
+  int contact_nodes = 0;       // nodes in contact (whole-shell count is not reconstructed)
+  double energy = 0;           // strain energy, N mm
+  Vector3d apex_curvature = Vector3d::Zero();  // k11, k12 + k21, k22 at the apex, 1/mm
+  // KKT residuals: min gap (mm), min multiplier (N), max |lambda_i g_i| (N mm).
+  double min_gap = 0, min_multiplier = 0, max_complementarity = 0;
+  std::vector<int> nodes;           // candidate nodes
+  std::vector<double> multipliers;  // lambda per candidate, N
+  std::vector<double> gaps;         // g per candidate, mm
+  std::vector<double> pressures;    // lambda / tributary area per candidate, MPa
+};
+
+class IndentationProblem : public cont::Problem {
+ public:
+  // Keeps references to model and indenter. `direction` is the indenter's unit direction of
+  // travel. Throws an input error if the indenter cannot reach the shell or starts inside it.
+  IndentationProblem(const ShellModel& model, const Indenter& indenter, const Vector3d& direction,
+                     IndentationOptions options);
+  ~IndentationProblem() override;
+
+  int size() const override;
+  bool residual(const cont::Vector& z, double h, cont::Vector& F) override;
+  bool factorize(const cont::Vector& z, double h) override;
+  bool solve(cont::Vector& b) override;
+  bool residual_p(const cont::Vector& z, double h, cont::Vector& out) override;
+  std::vector<std::string> monitor_names() const override;
+  cont::Vector monitors(const cont::Vector& z, double h) override;
+  std::vector<int> signature(const cont::Vector& z, double h) override;
+  bool adapt(cont::Vector& z, double h) override;
+
+  // The starting point: undeformed, no contact force (a solution at h = 0).
+  cont::Vector initial_point() const;
+  double first_touch() const { return t0_; }
+  double stiffness_scale() const { return kappa_; }
+  const std::vector<int>& candidates() const { return candidates_; }
+  int num_shell_unknowns() const { return chart_.size(); }
+  // The whole-shell force scale for tolerances: max(T_N, kappa * 1 mm * 1e-3) at z.
+  double force_scale(const cont::Vector& z) const;
+
+  std::vector<NodeState> node_states(const cont::Vector& z) const;
+  IndentationState evaluate(const cont::Vector& z, double h);
+  const ShellModel& model() const { return model_; }
+  const DofMap& dofs() const { return dofs_; }
+  const Assembler& assembler() const { return assembler_; }
+
+ private:
+  struct CandidateSlots;
+  void choose_candidates(const std::vector<int>& nodes);
+  void build_pattern();
+  NodeGap gap(int i, const std::vector<NodeState>& s, double h, bool derivative) const;
+  void shell_terms(const cont::Vector& z, double h, bool tangent, cont::Vector& r_free);
+
+  const ShellModel& model_;
+  const Indenter& indenter_;
+  Vector3d direction_;
+  IndentationOptions options_;
+  DofMap dofs_;
+  Assembler assembler_;
+  Assembly assembly_;
+  ShellChart chart_;
+  SparseMatrix linear_tangent_;  // linear kinematics: K at the reference state
+  double t0_ = 0;                // first touch travel
+  double kappa_ = 1;             // N/mm
+  std::vector<int> candidates_;
+  std::vector<NodeContactGeometry> geometry_;  // per mesh node
+  std::vector<double> tributary_area_;         // per mesh node, mm^2
+  mutable std::vector<double> touch_guess_;    // per candidate: last s(p), a Newton guess
+  std::vector<std::vector<int>> neighbours_;   // per mesh node
+  SparseMatrix jacobian_;
+  std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
+  std::vector<CandidateSlots> slots_;
+  std::unique_ptr<LinearSolver> solver_;
+  bool analyzed_ = false;
+  std::vector<NodeState> scratch_states_;
+};
+
+// The contact face offset of a case: the laminate's top face (contact.surface: outer) or its
+// mid-surface (contact.surface: mid, the paper's choice), measured from the reference surface.
+double contact_face_offset(const CaseFile& c);
+
+}  // namespace si
