@@ -372,6 +372,29 @@ bool IndentationProblem::adapt(cont::Vector& z, double h) {
   return true;
 }
 
+SparseMatrix IndentationProblem::contact_matrix() const {
+  SI_REQUIRE(model_.kinematics == Kinematics::kLinear, "contact_matrix: linear kinematics only");
+  const std::vector<NodeState> s = node_states(initial_point());
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const NodeGap g = gap(static_cast<int>(i), s, 0.0, false);
+    for (int l = 0; l < 5; ++l)
+      if (slots_[i].eq[l] >= 0 && g.hits)
+        t.emplace_back(static_cast<int>(i), slots_[i].eq[l], g.gradient[l]);
+  }
+  SparseMatrix C(static_cast<int>(candidates_.size()), chart_.size());
+  C.setFromTriplets(t.begin(), t.end());
+  return C;
+}
+
+Eigen::VectorXd IndentationProblem::reference_gaps() const {
+  const std::vector<NodeState> s = node_states(initial_point());
+  Eigen::VectorXd g0(candidates_.size());
+  for (std::size_t i = 0; i < candidates_.size(); ++i)
+    g0[static_cast<Eigen::Index>(i)] = gap(static_cast<int>(i), s, 0.0, false).gap;
+  return g0;
+}
+
 IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   const Mesh& mesh = model_.mesh;
   const int nf = chart_.size();

@@ -93,6 +93,13 @@ class IndentationProblem : public cont::Problem {
   double force_scale(const cont::Vector& z) const;
 
   std::vector<NodeState> node_states(const cont::Vector& z) const;
+
+  // Linear kinematics only (the fast path, linear_indentation.hpp): the reference tangent K
+  // (free dofs), the candidates' gap gradients C (one row per candidate, free-dof columns) and
+  // the gaps at h = 0 of the undeformed shell, g0 (mm); then g = g0 - h + C x.
+  const SparseMatrix& linear_tangent() const { return linear_tangent_; }
+  SparseMatrix contact_matrix() const;
+  Eigen::VectorXd reference_gaps() const;
   IndentationState evaluate(const cont::Vector& z, double h);
   const ShellModel& model() const { return model_; }
   const DofMap& dofs() const { return dofs_; }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/active_set_solver.hpp"
+#include "analysis/linear_indentation.hpp"
 #include "continuation/kinsol_corrector.hpp"
 #include "indentation_test_support.hpp"
 
@@ -85,6 +86,34 @@ TEST(ContactSolvers, KinsolAndActiveSetAgreeOnTheCap_Nonlinear) {
 
 TEST(ContactSolvers, KinsolAndActiveSetAgreeOnTheCap_Linear) {
   expect_solvers_agree("linear");
+}
+
+}  // namespace
+}  // namespace si
+
+namespace si {
+namespace {
+
+// Issue 4: with linear kinematics the fast path (K factored once, the LCP on the candidates)
+// and the full KINSOL solve of the same system agree to 1e-10.
+TEST(ContactSolvers, LinearFastPathAgreesWithKinsol) {
+  IndentationFixture f(coarse_cap_case("linear", "[45/-45]2S"));
+  IndentationProblem& p = *f.problem;
+  LinearIndentation fast(p);
+  cont::Vector z = p.initial_point();
+  for (double h : {0.2, 0.6, 1.0, 2.0, 1.3}) {  // also back down: the warm start must unload
+    const cont::NewtonResult r = cont::solve_at(p, z, h, kinsol_settings(p));
+    ASSERT_TRUE(r.converged) << r.reason;
+    const cont::Vector zf = fast.solve(h);
+    const int nf = p.num_shell_unknowns();
+    const auto rel = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+      return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
+    };
+    EXPECT_LT(rel(zf.head(nf), z.head(nf)), 1e-10) << h;                        // displacements
+    EXPECT_LT(rel(zf.tail(z.size() - nf), z.tail(z.size() - nf)), 1e-10) << h;  // multipliers
+    const IndentationState s = p.evaluate(zf, h);
+    expect_kkt_and_equilibrium(s, s.force, p.stiffness_scale());
+  }
 }
 
 }  // namespace

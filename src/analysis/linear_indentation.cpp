@@ -1,0 +1,91 @@
+#include "analysis/linear_indentation.hpp"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <limits>
+
+#include "core/error.hpp"
+
+namespace si {
+
+LinearIndentation::LinearIndentation(const IndentationProblem& problem)
+    : problem_(problem), solver_(make_linear_solver("cholmod")) {
+  SI_REQUIRE(problem.model().kinematics == Kinematics::kLinear,
+             "the linear fast path needs linear kinematics");
+  const SparseMatrix& K = problem.linear_tangent();
+  solver_->analyze(K);
+  solver_->factorize(K);
+  C_ = problem.contact_matrix();
+  g0_ = problem.reference_gaps();
+  const int nc = static_cast<int>(C_.rows());
+  S_.resize(nc, nc);
+  const SparseMatrix Ct = C_.transpose();
+  for (int j = 0; j < nc; ++j) {
+    const Eigen::VectorXd y = solver_->solve(Eigen::VectorXd(Ct.col(j)));
+    S_.col(j) = C_ * y;
+  }
+  S_ = 0.5 * (S_ + S_.transpose()).eval();  // exact symmetry for the dense Cholesky
+  lambda_ = Eigen::VectorXd::Zero(nc);
+}
+
+LinearIndentation::~LinearIndentation() = default;
+
+cont::Vector LinearIndentation::solve(double h) {
+  const int nc = static_cast<int>(S_.rows());
+  const Eigen::VectorXd q = g0_ - Eigen::VectorXd::Constant(nc, h);
+  // Optimality tolerance on w: roundoff of S lambda, relative to the gap scale.
+  const double tol = 1e-13 * std::max(1.0, q.cwiseAbs().maxCoeff());
+  Eigen::VectorXd lambda = lambda_;
+  std::vector<int> free;  // the working set's complement: indices where lambda may be > 0
+  for (int i = 0; i < nc; ++i)
+    if (lambda[i] > 0) free.push_back(i);
+  iterations_ = 0;
+  const int max_iterations = 10 * nc + 10;
+  for (;; ++iterations_) {
+    if (iterations_ > max_iterations)
+      throw_numerical("linear contact: the active-set method did not terminate");
+    // Minimiser on the current free set (others at zero).
+    const int m = static_cast<int>(free.size());
+    Eigen::VectorXd target = Eigen::VectorXd::Zero(nc);
+    if (m > 0) {
+      Eigen::MatrixXd Sff(m, m);
+      Eigen::VectorXd qf(m);
+      for (int a = 0; a < m; ++a) {
+        qf[a] = q[free[a]];
+        for (int b = 0; b < m; ++b) Sff(a, b) = S_(free[a], free[b]);
+      }
+      const Eigen::VectorXd sol = Sff.llt().solve(-qf);
+      for (int a = 0; a < m; ++a) target[free[a]] = sol[a];
+    }
+    // Blocked by a bound: step to the first multiplier reaching zero and drop it.
+    double alpha = 1.0;
+    int blocking = -1;
+    for (int i : free)
+      if (target[i] < 0 && lambda[i] - target[i] > 0) {
+        const double a = lambda[i] / (lambda[i] - target[i]);
+        if (a < alpha) alpha = a, blocking = i;
+      }
+    lambda += alpha * (target - lambda);
+    if (blocking >= 0) {
+      lambda[blocking] = 0;
+      free.erase(std::find(free.begin(), free.end(), blocking));
+      continue;
+    }
+    // Optimal on this set: free the most violated gap, if any.
+    const Eigen::VectorXd w = q + S_ * lambda;
+    int entering = -1;
+    double most = -tol;
+    for (int i = 0; i < nc; ++i)
+      if (lambda[i] == 0 && w[i] < most && std::find(free.begin(), free.end(), i) == free.end())
+        most = w[i], entering = i;
+    if (entering < 0) break;
+    free.push_back(entering);
+  }
+  lambda_ = lambda;
+  const Eigen::VectorXd x = solver_->solve(C_.transpose() * lambda);
+  cont::Vector z(x.size() + nc);
+  z << x, lambda;
+  return z;
+}
+
+}  // namespace si
