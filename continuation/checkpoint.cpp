@@ -1,0 +1,200 @@
+#include "continuation/checkpoint.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace si::cont {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kFormat = "si.cont.checkpoint";
+constexpr int kVersion = 1;
+
+// Finite doubles are JSON numbers: nlohmann_json 3.11 prints the shortest decimal that reads
+// back to the same double (Grisu2 + round trip), so they are exact. JSON has no inf/NaN: those
+// are the strings "inf", "-inf", "nan".
+json number(double v) {
+  if (std::isfinite(v)) return v;
+  if (std::isnan(v)) return "nan";
+  return v > 0 ? "inf" : "-inf";
+}
+
+double to_double(const json& j) {
+  if (j.is_number()) return j.get<double>();
+  const auto s = j.get<std::string>();
+  if (s == "nan") return std::numeric_limits<double>::quiet_NaN();
+  if (s == "inf") return std::numeric_limits<double>::infinity();
+  if (s == "-inf") return -std::numeric_limits<double>::infinity();
+  throw std::runtime_error("not a number: '" + s + "'");
+}
+
+json vector(const Vector& v) {
+  json a = json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(number(v(i)));
+  return a;
+}
+
+Vector to_vector(const json& j) {
+  Vector v(static_cast<Eigen::Index>(j.size()));
+  for (std::size_t i = 0; i < j.size(); ++i) v(static_cast<Eigen::Index>(i)) = to_double(j[i]);
+  return v;
+}
+
+json point_json(const Point& p) {
+  return {{"x", vector(p.x)},
+          {"p", number(p.p)},
+          {"tangent_p", number(p.tangent_p)},
+          {"monitors", vector(p.monitors)},
+          {"monitor_slopes", vector(p.monitor_slopes)},
+          {"monitor_curvatures", vector(p.monitor_curvatures)},
+          {"signature", p.signature},
+          {"jacobian_sign", p.jacobian_sign},
+          {"newton_iterations", p.newton_iterations},
+          {"step", number(p.step)},
+          {"arclength", number(p.arclength)}};
+}
+
+Point to_point(const json& j) {
+  Point p;
+  p.x = to_vector(j.at("x"));
+  p.p = to_double(j.at("p"));
+  p.tangent_p = to_double(j.at("tangent_p"));
+  p.monitors = to_vector(j.at("monitors"));
+  p.monitor_slopes = to_vector(j.at("monitor_slopes"));
+  p.monitor_curvatures = to_vector(j.at("monitor_curvatures"));
+  p.signature = j.at("signature").get<std::vector<int>>();
+  p.jacobian_sign = j.at("jacobian_sign").get<int>();
+  p.newton_iterations = j.at("newton_iterations").get<int>();
+  p.step = to_double(j.at("step"));
+  p.arclength = to_double(j.at("arclength"));
+  return p;
+}
+
+json event_json(const Event& e) {
+  return {{"type", e.name},
+          {"monitor", e.monitor},
+          {"against", e.against},
+          {"p", number(e.p)},
+          {"x", vector(e.x)},
+          {"monitors", vector(e.monitors)},
+          {"step", e.step},
+          {"located", e.located},
+          {"accuracy", number(e.accuracy)},
+          {"arclength", number(e.arclength)}};
+}
+
+EventType to_event_type(const std::string& name) {
+  for (EventType t : {EventType::kLimitPoint, EventType::kMonitorMax, EventType::kMonitorMin,
+                      EventType::kZeroCrossing, EventType::kSignatureChange, EventType::kInflection,
+                      EventType::kBifurcation})
+    if (event_type_name(t) == name) return t;
+  throw std::runtime_error("unknown event type '" + name + "'");
+}
+
+Event to_event(const json& j) {
+  Event e;
+  e.name = j.at("type").get<std::string>();
+  e.type = to_event_type(e.name);
+  e.monitor = j.at("monitor").get<std::string>();
+  e.against = j.at("against").get<std::string>();
+  e.p = to_double(j.at("p"));
+  e.x = to_vector(j.at("x"));
+  e.monitors = to_vector(j.at("monitors"));
+  e.step = j.at("step").get<int>();
+  e.located = j.at("located").get<bool>();
+  e.accuracy = to_double(j.at("accuracy"));
+  e.arclength = to_double(j.at("arclength"));
+  return e;
+}
+
+Status to_status(const std::string& name) {
+  for (Status s : {Status::kRunning, Status::kCompleted, Status::kReachedBound, Status::kMaxSteps,
+                   Status::kStepTooSmall, Status::kStoppedByCallback, Status::kStartFailed})
+    if (status_name(s) == name) return s;
+  throw std::runtime_error("unknown status '" + name + "'");
+}
+
+json branch_json(const Branch& b) {
+  json points = json::array();
+  for (const auto& p : b.points) points.push_back(point_json(p));
+  json events = json::array();
+  for (const auto& e : b.events) events.push_back(event_json(e));
+  return {
+      {"monitor_names", b.monitor_names}, {"points", points},   {"events", events},
+      {"status", status_name(b.status)},  {"reason", b.reason}, {"failed_steps", b.failed_steps}};
+}
+
+Branch to_branch(const json& j) {
+  Branch b;
+  b.monitor_names = j.at("monitor_names").get<std::vector<std::string>>();
+  for (const auto& p : j.at("points")) b.points.push_back(to_point(p));
+  for (const auto& e : j.at("events")) b.events.push_back(to_event(e));
+  b.status = to_status(j.at("status").get<std::string>());
+  b.reason = j.at("reason").get<std::string>();
+  b.failed_steps = j.at("failed_steps").get<int>();
+  return b;
+}
+
+json state_json(const State& s) {
+  return {{"current", point_json(s.current.point)},
+          {"tangent_x", vector(s.current.tangent_x)},
+          {"step", number(s.step)},
+          {"has_previous", s.has_previous},
+          {"previous_x", vector(s.previous_x)},
+          {"previous_p", number(s.previous_p)}};
+}
+
+State to_state(const json& j) {
+  State s;
+  s.current.point = to_point(j.at("current"));
+  s.current.tangent_x = to_vector(j.at("tangent_x"));
+  s.step = to_double(j.at("step"));
+  s.has_previous = j.at("has_previous").get<bool>();
+  s.previous_x = to_vector(j.at("previous_x"));
+  s.previous_p = to_double(j.at("previous_p"));
+  return s;
+}
+
+}  // namespace
+
+void save_checkpoint(const std::string& path, const Checkpoint& checkpoint) {
+  const json j = {{"format", kFormat},
+                  {"version", kVersion},
+                  {"method", method_name(checkpoint.method)},
+                  {"branch", branch_json(checkpoint.branch)},
+                  {"state", state_json(checkpoint.state)}};
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    if (!out) throw std::runtime_error("cannot write checkpoint '" + tmp + "'");
+    out << j.dump() << '\n';
+    out.flush();
+    if (!out) throw std::runtime_error("error writing checkpoint '" + tmp + "'");
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0)
+    throw std::runtime_error("cannot rename checkpoint '" + tmp + "' to '" + path + "'");
+}
+
+Checkpoint load_checkpoint(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read checkpoint '" + path + "'");
+  try {
+    const json j = json::parse(in);
+    if (j.at("format").get<std::string>() != kFormat || j.at("version").get<int>() != kVersion)
+      throw std::runtime_error("not a version-1 continuation checkpoint");
+    Checkpoint c;
+    c.method = parse_method(j.at("method").get<std::string>());
+    c.branch = to_branch(j.at("branch"));
+    c.state = to_state(j.at("state"));
+    return c;
+  } catch (const std::exception& e) {
+    throw std::runtime_error("checkpoint '" + path + "': " + e.what());
+  }
+}
+
+}  // namespace si::cont

@@ -1,0 +1,260 @@
+#include "continuation/tracer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "continuation/events.hpp"
+#include "continuation/kinsol_corrector.hpp"
+
+namespace si::cont {
+namespace {
+
+constexpr double kDegree = 0.017453292519943295;  // pi / 180
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+class Tracer {
+ public:
+  Tracer(Problem& problem, Stepper& stepper, BorderedSolver& bordered, const Settings& settings,
+         const Callback& callback)
+      : problem_(problem),
+        stepper_(stepper),
+        bordered_(bordered),
+        settings_(settings),
+        callback_(callback) {
+    branch_.monitor_names = problem.monitor_names();
+    indicators_ = make_indicators(settings, branch_.monitor_names);
+    needs_ = analysis_needs(indicators_);
+  }
+
+  Branch run(const Vector& x0, double p0) {
+    if (x0.size() != problem_.size())
+      throw std::invalid_argument("continuation: x0 has size " + std::to_string(x0.size()) +
+                                  " but the problem has size " + std::to_string(problem_.size()));
+    if (!(p0 >= settings_.p_min && p0 <= settings_.p_max))
+      throw std::invalid_argument("continuation: p0 = " + fmt(p0) + " is outside [p_min, p_max]");
+    if (start(x0, p0) && after_accept()) loop();
+    return branch_;
+  }
+
+  Branch resume(const Checkpoint& checkpoint) {
+    if (checkpoint.method != stepper_.method())
+      throw std::invalid_argument("continuation: the checkpoint was written by " +
+                                  method_name(checkpoint.method) + ", not " +
+                                  method_name(stepper_.method()));
+    if (checkpoint.state.current.point.x.size() != problem_.size())
+      throw std::invalid_argument("continuation: the checkpoint's x has size " +
+                                  std::to_string(checkpoint.state.current.point.x.size()) +
+                                  " but the problem has size " + std::to_string(problem_.size()));
+    branch_ = checkpoint.branch;
+    state_ = checkpoint.state;
+    const Status s = branch_.status;
+    if (s == Status::kCompleted || s == Status::kReachedBound || s == Status::kStartFailed)
+      return branch_;
+    branch_.status = Status::kRunning;
+    branch_.reason.clear();
+    loop();
+    return branch_;
+  }
+
+ private:
+  int steps() const { return static_cast<int>(branch_.points.size()) - 1; }
+
+  double chord(const Point& a, const Point& b) const {
+    const Vector dx = b.x - a.x;
+    const double dp = b.p - a.p;
+    return std::sqrt(bordered_.inner(dx, dp, dx, dp));
+  }
+
+  bool analyse(const Vector& x, double p, const Vector& ref_x, double ref_p, TangentPoint& out) {
+    return analyse_point(problem_, bordered_, x, p, ref_x, ref_p, needs_, out);
+  }
+
+  bool start(const Vector& x0, double p0) {
+    Vector x = x0;
+    const NewtonResult r = solve_at(problem_, x, p0, settings_.newton);
+    if (!r.converged) return finish(Status::kStartFailed, "the start point: " + r.reason);
+    if (!analyse(x, p0, Vector(), settings_.direction, state_.current))
+      return finish(Status::kStartFailed, "the Jacobian cannot be factored at the start point");
+    state_.current.point.newton_iterations = r.iterations;
+    state_.step = settings_.step_initial;
+    branch_.points.push_back(state_.current.point);
+    return true;
+  }
+
+  void loop() {
+    while (true) {
+      if (steps() >= settings_.max_steps) {
+        finish(Status::kMaxSteps, "max_steps = " + std::to_string(settings_.max_steps));
+        return;
+      }
+      const double nominal = state_.step;
+      const double ds = std::min(nominal, stepper_.distance_to_target(state_));
+      StepResult step;
+      TangentPoint b;
+      std::string why;
+      if (!try_step(ds, step, b, why)) {
+        ++branch_.failed_steps;
+        if (ds <= settings_.step_min * (1.0 + 1e-12)) {
+          finish(Status::kStepTooSmall, "a step of " + fmt(ds) + " from p = " +
+                                            fmt(state_.current.point.p) + " failed: " + why);
+          return;
+        }
+        state_.step = std::max(0.5 * ds, settings_.step_min);
+        continue;
+      }
+      const bool at_bound = clip_to_bound(step, b);
+      accept(step, b, nominal, ds < nominal);
+      if (!after_accept()) return;
+      if (at_bound) {
+        finish(Status::kReachedBound, "p reached the bound " + fmt(b.point.p));
+        return;
+      }
+      if (stepper_.finished(state_)) {
+        finish(Status::kCompleted, "the last parameter value was reached");
+        return;
+      }
+    }
+  }
+
+  bool try_step(double ds, StepResult& step, TangentPoint& b, std::string& why) {
+    step = stepper_.step(state_, ds);
+    if (!step.converged) {
+      why = step.reason;
+      return false;
+    }
+    const TangentPoint& a = state_.current;
+    if (!analyse(step.x, step.p, a.tangent_x, a.point.tangent_p, b)) {
+      why = "the Jacobian or dF/dp cannot be evaluated at the new point";
+      return false;
+    }
+    const double cos_turn =
+        bordered_.inner(a.tangent_x, a.point.tangent_p, b.tangent_x, b.point.tangent_p);
+    if (!(cos_turn >= std::cos(settings_.max_turn_deg * kDegree))) {
+      why = "the tangent turned by " + fmt(std::acos(std::clamp(cos_turn, -1.0, 1.0)) / kDegree) +
+            " deg > max_turn_deg";
+      return false;
+    }
+    return true;
+  }
+
+  SegmentSolver segment(const StepResult& step) {
+    return [this, &step](double sigma, TangentPoint& out) {
+      const TangentPoint& a = state_.current;
+      Vector x;
+      double p = 0.0;
+      return stepper_.solve_on_segment(state_, step, sigma, x, p) &&
+             analyse(x, p, a.tangent_x, a.point.tangent_p, out);
+    };
+  }
+
+  // If the step went past a parameter bound, replace b by the point on the bound: located on the
+  // segment by regula falsi on p - bound, then solved at p = bound exactly. True if b is on it.
+  bool clip_to_bound(StepResult& step, TangentPoint& b) {
+    const double p = b.point.p;
+    if (p == settings_.p_min || p == settings_.p_max) return true;
+    if (p > settings_.p_min && p < settings_.p_max) return false;
+    const double bound = p > settings_.p_max ? settings_.p_max : settings_.p_min;
+    const TangentPoint& a = state_.current;
+    TangentPoint at;
+    bool located = false;
+    locate_root([bound](const TangentPoint& tp) { return tp.point.p - bound; }, a, b,
+                step.sigma_end, segment(step), settings_, at, located);
+    Vector x = at.point.x;
+    if (solve_at(problem_, x, bound, settings_.newton).converged &&
+        analyse(x, bound, a.tangent_x, a.point.tangent_p, b)) {
+      step.sigma_end = stepper_.sigma_of(state_, step, b.point.x, b.point.p);
+      return true;
+    }
+    b = at;  // p within event_tolerance of the bound: the best available
+    step.sigma_end = stepper_.sigma_of(state_, step, b.point.x, b.point.p);
+    return true;
+  }
+
+  void accept(const StepResult& step, TangentPoint& b, double nominal, bool clipped) {
+    const TangentPoint& a = state_.current;
+    b.point.newton_iterations = step.iterations;
+    b.point.step = step.sigma_end;
+    b.point.arclength = a.point.arclength + chord(a.point, b.point);
+    const int index = steps() + 1;
+    const auto events = find_events(indicators_, branch_.monitor_names, a, b, step.sigma_end,
+                                    segment(step), settings_, index, bordered_);
+    branch_.points.push_back(b.point);
+    branch_.events.insert(branch_.events.end(), events.begin(), events.end());
+    state_.has_previous = true;
+    state_.previous_x = a.point.x;
+    state_.previous_p = a.point.p;
+    state_.current = b;
+    // Step adaptation by the Newton iteration count (Allgower & Georg 2003, §6.1, in spirit).
+    const double factor =
+        std::clamp(static_cast<double>(settings_.target_iterations) / std::max(step.iterations, 1),
+                   0.5, settings_.step_growth_max);
+    const double base = clipped ? nominal : step.sigma_end;
+    state_.step = std::clamp(base * factor, settings_.step_min, settings_.step_max);
+  }
+
+  // Adaptation, checkpoint and callback after an accepted point. false = the run ends.
+  bool after_accept() {
+    if (!adapt()) return false;
+    const int n = steps();
+    if (settings_.checkpoint_interval > 0 && n % settings_.checkpoint_interval == 0)
+      save_checkpoint(settings_.checkpoint_path, {stepper_.method(), branch_, state_});
+    if (callback_ && !callback_(branch_.points.back(), branch_))
+      return finish(Status::kStoppedByCallback, "stopped by the callback");
+    return true;
+  }
+
+  bool adapt() {
+    Vector x = state_.current.point.x;
+    const double p = state_.current.point.p;
+    if (!problem_.adapt(x, p)) return true;
+    const NewtonResult r = solve_at(problem_, x, p, settings_.newton);
+    if (!r.converged)
+      return finish(Status::kStepTooSmall, "no solution after Problem::adapt: " + r.reason);
+    const Point old = state_.current.point;
+    const double sign_p = old.tangent_p != 0.0 ? old.tangent_p : settings_.direction;
+    if (!analyse(x, p, Vector(), sign_p, state_.current))
+      return finish(Status::kStepTooSmall, "the Jacobian cannot be factored after Problem::adapt");
+    state_.current.point.newton_iterations = old.newton_iterations;
+    state_.current.point.step = old.step;
+    state_.current.point.arclength = old.arclength;
+    state_.has_previous = false;
+    return true;
+  }
+
+  bool finish(Status status, const std::string& reason) {
+    branch_.status = status;
+    branch_.reason = reason;
+    if (!settings_.checkpoint_path.empty() && status != Status::kStartFailed)
+      save_checkpoint(settings_.checkpoint_path, {stepper_.method(), branch_, state_});
+    return false;
+  }
+
+  Problem& problem_;
+  Stepper& stepper_;
+  BorderedSolver& bordered_;
+  const Settings& settings_;
+  const Callback& callback_;
+  std::vector<Indicator> indicators_;
+  AnalysisNeeds needs_;
+  Branch branch_;
+  State state_;
+};
+
+}  // namespace
+
+Branch trace(Problem& problem, Stepper& stepper, BorderedSolver& bordered, const Vector& x0,
+             double p0, const Settings& settings, const Callback& callback,
+             const std::optional<Checkpoint>& resume) {
+  settings.validate();
+  Tracer tracer(problem, stepper, bordered, settings, callback);
+  return resume ? tracer.resume(*resume) : tracer.run(x0, p0);
+}
+
+}  // namespace si::cont

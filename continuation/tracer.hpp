@@ -1,0 +1,52 @@
+// The loop shared by natural and pseudo-arclength continuation: start, step control (growth by
+// Newton iteration count, halving on failure), parameter bounds, events, adaptation,
+// checkpoints, callback. What differs between the two methods (predictor, corrector, what a
+// step measures) is a Stepper. Internal to the library: users call natural.hpp and
+// pseudo_arclength.hpp.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "continuation/checkpoint.hpp"
+
+namespace si::cont {
+
+struct StepResult {
+  bool converged = false;
+  Vector x;
+  double p = 0.0;
+  int iterations = 0;
+  std::string reason;
+  // The segment from the start of the step to (x, p), for events: its local coordinate sigma
+  // runs from 0 to sigma_end along `direction` (pseudo-arclength) or along p (natural).
+  Vector direction_x;
+  double direction_p = 0.0;
+  double sigma_end = 0.0;
+};
+
+class Stepper {
+ public:
+  virtual ~Stepper() = default;
+  virtual Method method() const = 0;
+  // The largest step from `from` before a parameter value that must be hit exactly (natural:
+  // the next Settings::parameter_values entry or bound ahead); +infinity if none.
+  virtual double distance_to_target(const State& from) const = 0;
+  // True when `state` sits on the last target (natural with parameter_values: completed).
+  virtual bool finished(const State& state) const = 0;
+  // One predictor-corrector step of size ds from `from`.
+  virtual StepResult step(const State& from, double ds) = 0;
+  // The local coordinate of (x, p) on the segment of `step`.
+  virtual double sigma_of(const State& from, const StepResult& step, const Vector& x,
+                          double p) const = 0;
+  // (x, p) on the segment of `step` at local coordinate sigma, from the chord predictor.
+  virtual bool solve_on_segment(const State& from, const StepResult& step, double sigma, Vector& x,
+                                double& p) = 0;
+};
+
+// Runs from a fresh start (resume empty) or from a checkpoint.
+Branch trace(Problem& problem, Stepper& stepper, BorderedSolver& bordered, const Vector& x0,
+             double p0, const Settings& settings, const Callback& callback,
+             const std::optional<Checkpoint>& resume);
+
+}  // namespace si::cont

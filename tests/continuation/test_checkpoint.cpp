@@ -1,0 +1,173 @@
+// Checkpoints: exact JSON round trip, and a killed run resumed from its last checkpoint
+// reproduces the uninterrupted run (acceptance: to 1e-10).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include "bratu_problem.hpp"
+#include "continuation/checkpoint.hpp"
+#include "continuation/natural.hpp"
+#include "continuation/pseudo_arclength.hpp"
+
+namespace si::cont {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A per-test file in gtest's temporary directory (tests may run in parallel under ctest).
+std::string temp_path(const std::string& name) {
+  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+  return testing::TempDir() + "cont_" + info->name() + "_" + name;
+}
+
+Settings bratu_settings(Method method) {
+  Settings s;
+  s.method = method;
+  s.step_initial = 0.1;
+  s.step_max = 0.15;
+  s.p_min = 0.5;
+  s.p_max = method == Method::kNatural ? 3.45 : 5.0;  // natural stops below the fold
+  s.max_steps = 40;
+  s.newton.residual_scale = 10.0;
+  s.extremum_monitors = {"u_max"};
+  s.predictor = Predictor::kSecant;  // the resumed run needs the previous point too
+  return s;
+}
+
+Branch run_fresh(Method method, test::BratuProblem& bratu, const Settings& s,
+                 const Callback& callback = {}) {
+  const Vector x0 = Vector::Zero(bratu.size());
+  return method == Method::kNatural ? natural(bratu, x0, 1.0, s, callback)
+                                    : pseudo_arclength(bratu, x0, 1.0, s, callback);
+}
+
+void expect_same_branch(const Branch& a, const Branch& b, double tol) {
+  EXPECT_EQ(a.status, b.status);
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    EXPECT_NEAR(a.points[i].p, b.points[i].p, tol) << "point " << i;
+    EXPECT_LE((a.points[i].x - b.points[i].x).lpNorm<Eigen::Infinity>(), tol) << "point " << i;
+    EXPECT_EQ(a.points[i].newton_iterations, b.points[i].newton_iterations);
+  }
+  ASSERT_EQ(a.events.size(), b.events.size());
+  for (std::size_t i = 0; i < a.events.size(); ++i) {
+    EXPECT_EQ(a.events[i].name, b.events[i].name);
+    EXPECT_NEAR(a.events[i].p, b.events[i].p, tol);
+  }
+}
+
+// The run is "killed" after step 13: the callback copies the checkpoint on disk at that moment
+// (written at step 10) and stops. Resuming from the copy must give the uninterrupted branch.
+void expect_resume_reproduces(Method method) {
+  const int n = 100;
+  test::BratuProblem bratu(n);
+  const Settings plain = bratu_settings(method);
+  const Branch reference = run_fresh(method, bratu, plain);
+  ASSERT_GT(reference.points.size(), 15u);  // so that the kill at step 13 interrupts it
+
+  Settings s = plain;
+  s.checkpoint_path = temp_path("run.json");
+  s.checkpoint_interval = 5;
+  const std::string killed = temp_path("killed.json");
+  run_fresh(method, bratu, s, [&](const Point&, const Branch& branch) {
+    if (branch.points.size() < 14) return true;
+    fs::copy_file(s.checkpoint_path, killed, fs::copy_options::overwrite_existing);
+    return false;
+  });
+  ASSERT_TRUE(fs::exists(killed)) << "the run ended before step 13";
+  const Checkpoint checkpoint = load_checkpoint(killed);
+  EXPECT_EQ(checkpoint.branch.points.size(), 11u);  // start + 10 steps
+  EXPECT_EQ(checkpoint.branch.status, Status::kRunning);
+
+  const Branch resumed = method == Method::kNatural ? natural(bratu, checkpoint, plain)
+                                                    : pseudo_arclength(bratu, checkpoint, plain);
+  expect_same_branch(reference, resumed, 1e-10);
+  fs::remove(s.checkpoint_path);
+  fs::remove(killed);
+}
+
+TEST(ContCheckpoint, ResumePseudoArclengthReproducesUninterruptedRun) {
+  expect_resume_reproduces(Method::kPseudoArclength);
+}
+
+TEST(ContCheckpoint, ResumeNaturalReproducesUninterruptedRun) {
+  expect_resume_reproduces(Method::kNatural);
+}
+
+TEST(ContCheckpoint, JsonRoundTripIsExact) {
+  Checkpoint c;
+  c.method = Method::kNatural;
+  Point pt;
+  pt.x = Vector{{0.1, 1.0 / 3.0, -2.5e-300, std::nextafter(1.0, 2.0)}};
+  pt.p = M_PI;
+  pt.tangent_p = -std::sqrt(0.5);
+  pt.monitors = Vector{{std::numeric_limits<double>::quiet_NaN(), 1e300}};
+  pt.signature = {1, 0, 1};
+  pt.jacobian_sign = -1;
+  pt.newton_iterations = 3;
+  pt.step = 0.123456789012345678;
+  c.branch.monitor_names = {"a", "b"};
+  c.branch.points = {pt, pt};
+  Event e;
+  e.type = EventType::kInflection;
+  e.name = event_type_name(e.type);
+  e.monitor = "a";
+  e.against = "b";
+  e.p = 1.0 / 7.0;
+  e.x = pt.x;
+  e.located = true;
+  c.branch.events = {e};
+  c.state.current.point = pt;
+  c.state.current.tangent_x = Vector{{std::exp(1.0), -std::numeric_limits<double>::infinity()}};
+  c.state.step = 1e-7 / 3.0;
+  c.state.has_previous = true;
+  c.state.previous_x = pt.x * 0.7;
+  c.state.previous_p = 2.0 / 3.0;
+
+  const std::string path = temp_path("roundtrip.json");
+  save_checkpoint(path, c);
+  EXPECT_FALSE(fs::exists(path + ".tmp"));  // written to the temporary, then renamed
+  const Checkpoint r = load_checkpoint(path);
+  fs::remove(path);
+
+  EXPECT_EQ(r.method, Method::kNatural);
+  const Point& q = r.state.current.point;
+  EXPECT_TRUE((q.x.array() == pt.x.array()).all());  // bit for bit
+  EXPECT_EQ(q.p, pt.p);
+  EXPECT_EQ(q.tangent_p, pt.tangent_p);
+  EXPECT_TRUE(std::isnan(q.monitors(0)));
+  EXPECT_EQ(q.monitors(1), 1e300);
+  EXPECT_EQ(q.signature, pt.signature);
+  EXPECT_EQ(q.step, pt.step);
+  EXPECT_EQ(r.state.current.tangent_x(0), std::exp(1.0));
+  EXPECT_EQ(r.state.current.tangent_x(1), -std::numeric_limits<double>::infinity());
+  EXPECT_EQ(r.state.step, c.state.step);
+  EXPECT_TRUE((r.state.previous_x.array() == c.state.previous_x.array()).all());
+  ASSERT_EQ(r.branch.events.size(), 1u);
+  EXPECT_EQ(r.branch.events[0].type, EventType::kInflection);
+  EXPECT_EQ(r.branch.events[0].against, "b");
+  EXPECT_EQ(r.branch.events[0].p, 1.0 / 7.0);
+}
+
+TEST(ContCheckpoint, MissingOrForeignFileRejectedWithItsName) {
+  const std::string path = temp_path("foreign.json");
+  EXPECT_THROW(load_checkpoint(path), std::runtime_error);
+  {
+    std::ofstream out(path);
+    out << R"({"format": "something else", "version": 1})";
+  }
+  try {
+    load_checkpoint(path);
+    ADD_FAILURE() << "foreign file accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  fs::remove(path);
+}
+
+}  // namespace
+}  // namespace si::cont

@@ -1,0 +1,144 @@
+// Event location on branches with known answers: y = p^3 - 3p (extrema at p = -1 (max) and
+// p = +1 (min), zeros at p = 0, +-sqrt(3), inflection of y against p at p = 0), by both methods.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "branch_test_support.hpp"
+#include "continuation/natural.hpp"
+#include "continuation/pseudo_arclength.hpp"
+#include "dense_test_problems.hpp"
+
+namespace si::cont {
+namespace {
+
+// Monitors of the cubic branch plus q = p^3 + p, a nonlinear monotone abscissa: d2y/dq2 =
+// 24 p / (3p^2 + 1)^3, so y(q) also has its inflection at p = 0.
+class CubicWithAbscissa final : public Problem {
+ public:
+  int size() const override { return cubic_.size(); }
+  bool residual(const Vector& x, double p, Vector& F) override { return cubic_.residual(x, p, F); }
+  bool factorize(const Vector& x, double p) override { return cubic_.factorize(x, p); }
+  bool solve(Vector& b) override { return cubic_.solve(b); }
+  std::vector<std::string> monitor_names() const override { return {"y", "p", "q"}; }
+  Vector monitors(const Vector& x, double p) override { return Vector{{x(0), p, p * p * p + p}}; }
+  std::vector<int> signature(const Vector& x, double p) override { return cubic_.signature(x, p); }
+
+ private:
+  test::CubicBranchProblem cubic_;
+};
+
+Settings event_settings(Method method) {
+  Settings s;
+  s.method = method;
+  s.step_initial = 0.05;
+  s.step_max = 0.25;
+  s.p_min = -2.5;
+  s.p_max = 2.5;
+  s.event_tolerance = 1e-9;
+  s.extremum_monitors = {"y"};
+  s.zero_crossing_monitors = {"y"};
+  s.inflections = {{"y", "p"}, {"y", "q"}};
+  return s;
+}
+
+Branch run(Method method) {
+  CubicWithAbscissa problem;
+  const Settings s = event_settings(method);
+  const Vector x0 = Vector::Constant(1, test::CubicBranchProblem::branch(-2.4));
+  return method == Method::kNatural ? natural(problem, x0, -2.4, s)
+                                    : pseudo_arclength(problem, x0, -2.4, s);
+}
+
+// Location accuracy: the bracket is event_tolerance (1e-9) wide; the indicators themselves carry
+// finite-difference errors (point_analysis.hpp): ~1e-10 relative for slopes, ~1e-8 for second
+// derivatives, which move the root by that over the indicator's slope (O(1) here).
+constexpr double kSlopeRootTol = 1e-8;
+constexpr double kCurvatureRootTol = 1e-6;
+
+void expect_cubic_events(const Branch& branch) {
+  ASSERT_EQ(branch.status, Status::kReachedBound) << branch.reason;
+  EXPECT_TRUE(test::events_of(branch, EventType::kLimitPoint).empty());
+
+  const auto maxima = test::events_of(branch, EventType::kMonitorMax);
+  const auto minima = test::events_of(branch, EventType::kMonitorMin);
+  ASSERT_EQ(maxima.size(), 1u);
+  ASSERT_EQ(minima.size(), 1u);
+  EXPECT_EQ(maxima[0].monitor, "y");
+  EXPECT_NEAR(maxima[0].p, -1.0, kSlopeRootTol);
+  // y(-1) = 2: y is flat there, so only the corrector's error (||F|| <= 1e-10, |dF/dx| >= 1)
+  // remains.
+  EXPECT_NEAR(maxima[0].monitors(0), 2.0, 1e-10);
+  EXPECT_NEAR(minima[0].p, 1.0, kSlopeRootTol);
+  EXPECT_NEAR(minima[0].monitors(0), -2.0, 1e-10);
+
+  const auto zeros = test::events_of(branch, EventType::kZeroCrossing);
+  ASSERT_EQ(zeros.size(), 3u);
+  const double expected_zeros[] = {-std::sqrt(3.0), 0.0, std::sqrt(3.0)};
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_TRUE(zeros[i].located);
+    // |dy/dp| = 6 at +-sqrt(3), 3 at 0: the bracket in p is at most event_tolerance.
+    EXPECT_NEAR(zeros[i].p, expected_zeros[i], 1e-9);
+  }
+
+  const auto inflections = test::events_of(branch, EventType::kInflection);
+  ASSERT_EQ(inflections.size(), 2u);
+  for (const auto& e : inflections) {
+    EXPECT_EQ(e.monitor, "y");
+    EXPECT_TRUE(e.located);
+    EXPECT_NEAR(e.p, 0.0, kCurvatureRootTol) << "against " << e.against;
+  }
+
+  // The signature (sign of y) changes at the three zeros, located by bisection.
+  const auto changes = test::events_of(branch, EventType::kSignatureChange);
+  ASSERT_EQ(changes.size(), 3u);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(changes[i].p, expected_zeros[i], 1e-8);
+
+  // Events are ordered along the branch and tagged with the step that contains them.
+  for (std::size_t i = 1; i < branch.events.size(); ++i)
+    EXPECT_LE(branch.events[i - 1].arclength, branch.events[i].arclength);
+  for (const auto& e : branch.events) {
+    ASSERT_GE(e.step, 1);
+    ASSERT_LT(e.step, static_cast<int>(branch.points.size()));
+    EXPECT_LE(branch.points[e.step - 1].p, e.p + 1e-12);
+    EXPECT_GE(branch.points[e.step].p, e.p - 1e-12);
+  }
+}
+
+TEST(ContEvents, CubicBranchNatural) {
+  expect_cubic_events(run(Method::kNatural));
+}
+
+TEST(ContEvents, CubicBranchPseudoArclength) {
+  expect_cubic_events(run(Method::kPseudoArclength));
+}
+
+TEST(ContEvents, UnknownMonitorRejected) {
+  CubicWithAbscissa problem;
+  Settings s = event_settings(Method::kNatural);
+  s.extremum_monitors = {"force"};
+  try {
+    natural(problem, Vector::Constant(1, 0.0), 0.0, s);
+    ADD_FAILURE() << "unknown monitor accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "continuation.extremum_monitors: unknown monitor 'force' (known: y, p, q)");
+  }
+}
+
+TEST(ContEvents, SignatureChangeUnlocatedWhenNotAsked) {
+  CubicWithAbscissa problem;
+  Settings s = event_settings(Method::kNatural);
+  s.locate_signature_changes = false;
+  s.extremum_monitors.clear();
+  s.zero_crossing_monitors.clear();
+  s.inflections.clear();
+  const Branch branch = natural(problem, Vector::Constant(1, 0.0), 0.0 - 0.3, s);
+  const auto changes = test::events_of(branch, EventType::kSignatureChange);
+  ASSERT_EQ(changes.size(), 2u);  // at 0 and sqrt(3)
+  EXPECT_FALSE(changes[0].located);
+  EXPECT_EQ(changes[0].p, branch.points[changes[0].step].p);  // reported at the later point
+}
+
+}  // namespace
+}  // namespace si::cont
