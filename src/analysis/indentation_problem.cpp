@@ -322,6 +322,14 @@ double IndentationProblem::force_scale(const cont::Vector& z) const {
   return std::max(std::abs(force), kappa_ * 1e-3);
 }
 
+double IndentationProblem::inner(const cont::Vector& a, const cont::Vector& b) const {
+  const int nf = chart_.size();
+  const Eigen::Index nc = a.size() - nf;
+  double shell = a.head(nf).dot(b.head(nf)) / nf;
+  if (nc > 0) shell += a.tail(nc).dot(b.tail(nc)) / (static_cast<double>(nc) * kappa_ * kappa_);
+  return shell;
+}
+
 std::vector<std::string> IndentationProblem::monitor_names() const {
   return {"force_N",    "apex_w_mm",  "contact_radius_mm", "energy_Nmm",
           "k11_per_mm", "k12_per_mm", "k22_per_mm"};
@@ -396,6 +404,8 @@ Eigen::VectorXd IndentationProblem::reference_gaps() const {
 }
 
 IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
+  if (cached_state_ && h == cached_h_ && z.size() == cached_z_.size() && z == cached_z_)
+    return *cached_state_;
   const Mesh& mesh = model_.mesh;
   const int nf = chart_.size();
   const double sym = model_.symmetry_factor;
@@ -443,6 +453,9 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
     }
   }
   out.force *= sym;
+  cached_z_ = z;
+  cached_h_ = h;
+  cached_state_ = std::make_unique<IndentationState>(out);
   return out;
 }
 

@@ -78,6 +78,10 @@ class IndentationProblem : public cont::Problem {
   bool factorize(const cont::Vector& z, double h) override;
   bool solve(cont::Vector& b) override;
   bool residual_p(const cont::Vector& z, double h, cont::Vector& out) override;
+  // Arclength metric: mean square of the shell coordinates (mm, rad) plus the mean square of the
+  // multipliers over kappa (mm), so that with parameter weight 1 an arclength step is about a
+  // depth step (each shell point moves at most as much as the indenter).
+  double inner(const cont::Vector& a, const cont::Vector& b) const override;
   std::vector<std::string> monitor_names() const override;
   cont::Vector monitors(const cont::Vector& z, double h) override;
   std::vector<int> signature(const cont::Vector& z, double h) override;
@@ -134,6 +138,10 @@ class IndentationProblem : public cont::Problem {
   std::unique_ptr<LinearSolver> solver_;
   bool analyzed_ = false;
   std::vector<NodeState> scratch_states_;
+  // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.
+  cont::Vector cached_z_;
+  double cached_h_ = 0;
+  std::unique_ptr<IndentationState> cached_state_;
 };
 
 // The contact face offset of a case: the laminate's top face (contact.surface: outer) or its

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <string>
 
+#include "app/run_command.hpp"
 #include "app/section_command.hpp"
 #include "app/static_command.hpp"
 #include "core/error.hpp"
@@ -16,8 +17,9 @@ constexpr const char* kDescription =
     "shellindent " SHELLINDENT_VERSION
     " - static indentation of laminated composite shells by rigid indenters.\n"
     "Section analysis (CLT, FSDT, variational-asymptotic Reissner-Mindlin law) and static shell\n"
-    "runs under apex force or pressure; contact and path following to come. Quantities carry "
-    "units: \"0.475 mm\",\n"
+    "runs under apex force or pressure; indentation by rigid indenters along a depth path "
+    "(frictionless Lagrange-multiplier contact, KINSOL, continuation). Quantities carry units: "
+    "\"0.475 mm\",\n"
     "\"130 GPa\", \"45 deg\". Internal units are mm, N, MPa.";
 
 constexpr const char* kSectionHelp =
@@ -38,6 +40,21 @@ constexpr const char* kStaticHelp =
     "elements) to the output directory. Exit 1 if a step fails (converged steps are written).\n"
     "Example:\n"
     "  shellindent static studies/cap_apex_load.yaml --out results/cap_apex_load";
+
+constexpr const char* kRunHelp =
+    "Indentation depth path of a case file: a rigid indenter pressed into the shell from first "
+    "touch to path.depth_max (frictionless contact; KINSOL on the complementarity system with "
+    "natural or pseudo-arclength continuation in the depth, or the linear fast path for "
+    "kinematics: linear). Without a case file, runs the built-in default: the source paper's "
+    "clamped carbon/epoxy cap, [0/0]2S, 12.7 mm sphere, 0 to 10 mm. Prints a progress line per "
+    "converged point to stderr and the force-depth table to stdout; writes path.csv (columns "
+    "depth_mm, force_N, reaction_N, apex_w_mm, contact radius and area, apex curvatures, energy, "
+    "work, KKT residuals, iterations: docs/results.md), path.json, events.json and VTU files with "
+    "the contact pressure (path.pvd for ParaView). Ctrl-C stops after the current point and "
+    "writes what converged. Exit 1 if the path stops early.\n"
+    "Examples:\n"
+    "  shellindent run                                   (the paper's cap, results/paper_cap/)\n"
+    "  shellindent run studies/paper_cap.yaml --out results/cap_0_90";
 
 int run(int argc, char** argv) {
   CLI::App app{kDescription, "shellindent"};
@@ -79,6 +96,14 @@ int run(int argc, char** argv) {
   static_cmd->add_option("--threads", sto.threads, "assembly threads (0: OpenMP default)")
       ->capture_default_str();
 
+  si::RunCommandOptions ro;
+  auto* run_cmd = app.add_subcommand("run", kRunHelp);
+  run_cmd->add_option("case", ro.case_file, "YAML case file (default: the built-in paper cap)")
+      ->check(CLI::ExistingFile);
+  run_cmd->add_option("--out", ro.out_dir, "output directory (default: output.dir of the case)");
+  run_cmd->add_option("--threads", ro.threads, "assembly threads (0: OpenMP default)")
+      ->capture_default_str();
+
   auto* materials = app.add_subcommand("materials", "List the built-in material library.");
 
   std::string notation;
@@ -109,6 +134,7 @@ int run(int argc, char** argv) {
 
   if (*section) return si::run_section_command(so, std::cout);
   if (*static_cmd) return si::run_static_command(sto, std::cout, std::cerr);
+  if (*run_cmd) return si::run_run_command(ro, std::cout, std::cerr);
   if (*materials) return si::run_materials_command(std::cout);
   if (*layup) return si::run_layup_command(notation, std::cout);
   return 2;

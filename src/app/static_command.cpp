@@ -8,7 +8,7 @@
 #include <sstream>
 #include <vector>
 
-#include "analysis/nodal_resultants.hpp"
+#include "analysis/result_fields.hpp"
 #include "analysis/shell_model.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -83,17 +83,7 @@ void write_results(const std::filesystem::path& dir, const ShellModel& m,
   write_file_atomically((dir / "static.json").string(), json);
   err << "wrote " << (dir / "static.csv").string() << " and " << (dir / "static.json").string();
   if (last_state != nullptr) {
-    const Eigen::MatrixXd strains = nodal_strains(m.mesh, assembler, *m.element, *last_state);
-    const Eigen::MatrixXd resultants = nodal_resultants(strains, m.law);
-    VtuFields fields;
-    fields.point_data["membrane_strain"] = strains.leftCols(3);  // e11, 2e12, e22
-    fields.point_data["curvature"] = strains.middleCols(3, 3);   // k11, k12+k21, k22
-    fields.point_data["shear_strain_13"] = strains.col(6);       // 2g13
-    fields.point_data["shear_strain_23"] = strains.col(7);       // 2g23
-    fields.point_data["N"] = resultants.leftCols(3);
-    fields.point_data["M"] = resultants.middleCols(3, 3);
-    fields.point_data["Q1"] = resultants.col(6);
-    fields.point_data["Q2"] = resultants.col(7);
+    const VtuFields fields = resultant_fields(m.mesh, assembler, *m.element, m.law, *last_state);
     write_vtu((dir / "static.vtu").string(), m.mesh, *last_state, fields);
     err << " and " << (dir / "static.vtu").string();
   }

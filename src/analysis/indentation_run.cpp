@@ -1,0 +1,210 @@
+#include "analysis/indentation_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/active_set_solver.hpp"
+#include "analysis/linear_indentation.hpp"
+#include "contact/indenter_factory.hpp"
+#include "continuation/kinsol_corrector.hpp"
+#include "continuation/natural.hpp"
+#include "continuation/pseudo_arclength.hpp"
+#include "core/error.hpp"
+
+namespace si {
+namespace {
+
+IndentationOptions options_of(const CaseFile& c, int threads) {
+  IndentationOptions o;
+  o.contact_offset = contact_face_offset(c);
+  // Every node the indenter can reach within the path's depth, plus a margin for the shell's
+  // own motion towards it; adapt() grows the set if contact still spreads past it.
+  o.candidate_depth = 1.2 * c.path.depth_max + 1.0;
+  o.ncp = c.contact.solver == ContactSolver::kActiveSet ? NcpFunction::kMin
+                                                        : NcpFunction::kFischerBurmeister;
+  o.threads = threads;
+  return o;
+}
+
+// The accumulated indenter work and the point, appended to the result.
+class PathRecorder {
+ public:
+  PathRecorder(PathResult& result, const PathCallback& callback)
+      : result_(result), callback_(callback) {}
+  bool add(IndentationProblem& problem, const cont::Vector& z, double h, int iterations,
+           double step) {
+    PathPoint p;
+    p.state = problem.evaluate(z, h);
+    p.iterations = iterations;
+    p.step = step;
+    if (!result_.points.empty()) {
+      const IndentationState& prev = result_.points.back().state;
+      p.work = result_.points.back().work +
+               0.5 * (prev.force + p.state.force) * (p.state.depth - prev.depth);
+    }
+    result_.points.push_back(p);
+    return !callback_ || callback_(result_.points.back(), z);
+  }
+
+ private:
+  PathResult& result_;
+  const PathCallback& callback_;
+};
+
+void finish(PathResult& r, bool completed, const std::string& status, const std::string& reason) {
+  r.completed = completed;
+  r.status = status;
+  r.reason = reason;
+}
+
+// Linear kinematics: each depth of the grid independently, by the fast path.
+PathResult run_linear(IndentationSetup& s, const PathCallback& callback) {
+  PathResult r;
+  r.method = "linear fast path";
+  r.monitor_names = s.problem->monitor_names();
+  PathRecorder rec(r, callback);
+  LinearIndentation fast(*s.problem);
+  if (!rec.add(*s.problem, s.problem->initial_point(), 0.0, 0, 0.0)) {
+    finish(r, false, "stopped", "stopped by the user");
+    return r;
+  }
+  double previous = 0;
+  for (double h : depth_grid(s.case_file.path)) {
+    cont::Vector z;
+    try {
+      z = fast.solve(h);
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::kNumerical) throw;
+      finish(r, false, "failed", "depth " + std::to_string(h) + " mm: " + e.reason());
+      return r;
+    }
+    if (!rec.add(*s.problem, z, h, fast.last_iterations(), h - previous)) {
+      finish(r, false, "stopped", "stopped by the user");
+      return r;
+    }
+    previous = h;
+  }
+  finish(r, true, "completed", "");
+  return r;
+}
+
+// contact.solver active_set: the primal-dual active-set method at each depth of the grid.
+PathResult run_active_set(IndentationSetup& s, const PathCallback& callback) {
+  PathResult r;
+  r.method = "active_set";
+  r.monitor_names = s.problem->monitor_names();
+  PathRecorder rec(r, callback);
+  IndentationProblem& p = *s.problem;
+  cont::Vector z = p.initial_point();
+  if (!rec.add(p, z, 0.0, 0, 0.0)) {
+    finish(r, false, "stopped", "stopped by the user");
+    return r;
+  }
+  double previous = 0;
+  for (double h : depth_grid(s.case_file.path)) {
+    const ActiveSetResult a = solve_active_set(p, z, h, 1e-10 * p.force_scale(z));
+    if (!a.converged) {
+      finish(r, false, "failed", "depth " + std::to_string(h) + " mm: " + a.reason);
+      return r;
+    }
+    if (p.adapt(z, h)) {  // contact reached the edge of the candidate set: solve again
+      const ActiveSetResult again = solve_active_set(p, z, h, 1e-10 * p.force_scale(z));
+      if (!again.converged) {
+        finish(r, false, "failed", "depth " + std::to_string(h) + " mm: " + again.reason);
+        return r;
+      }
+    }
+    if (!rec.add(p, z, h, a.iterations, h - previous)) {
+      finish(r, false, "stopped", "stopped by the user");
+      return r;
+    }
+    previous = h;
+  }
+  finish(r, true, "completed", "");
+  return r;
+}
+
+cont::Settings continuation_settings(const IndentationSetup& s) {
+  const PathSpec& path = s.case_file.path;
+  cont::Settings c;
+  c.method =
+      path.method == PathMethod::kNatural ? cont::Method::kNatural : cont::Method::kPseudoArclength;
+  c.step_initial = path.step;
+  c.step_min = path.step_min;
+  c.step_max = path.step_max;
+  c.p_max = path.depth_max;
+  c.p_min = -path.depth_max;  // a snap-back may reduce the depth; never below minus the path
+  c.max_steps = static_cast<int>(20 * path.depth_max / path.step) + 100;
+  c.newton.relative_tolerance = 1e-10;
+  // The force a gap of one depth step would carry: the scale of the equilibrium residual.
+  c.newton.residual_scale = s.problem->stiffness_scale() * path.step;
+  c.newton.max_iterations = 25;
+  c.extremum_monitors = {"force_N"};
+  c.inflections = {{"force_N", "k11_per_mm"}, {"force_N", "k22_per_mm"}};
+  c.detect_signature_changes = true;
+  c.locate_signature_changes = false;  // contact grows node by node: report, do not bisect
+  if (c.method == cont::Method::kNatural) c.parameter_values = depth_grid(path);
+  return c;
+}
+
+PathResult run_continuation(IndentationSetup& s, const PathCallback& callback) {
+  PathResult r;
+  const cont::Settings settings = continuation_settings(s);
+  r.method = cont::method_name(settings.method);
+  r.monitor_names = s.problem->monitor_names();
+  PathRecorder rec(r, callback);
+  const cont::Callback on_point = [&](const cont::Point& pt, const cont::Branch&) {
+    return rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step);
+  };
+  const cont::Branch b =
+      settings.method == cont::Method::kNatural
+          ? cont::natural(*s.problem, s.problem->initial_point(), 0.0, settings, on_point)
+          : cont::pseudo_arclength(*s.problem, s.problem->initial_point(), 0.0, settings, on_point);
+  r.events = b.events;
+  const bool ok = b.status == cont::Status::kCompleted || b.status == cont::Status::kReachedBound;
+  finish(r, ok, cont::status_name(b.status), b.reason);
+  return r;
+}
+
+}  // namespace
+
+IndenterPose default_indenter_pose(const CaseFile& c, const ShellModel& model) {
+  IndenterPose pose;
+  const int apex = model.apex_node();
+  const IndenterSpec& i = c.indenter;
+  const double size = std::max({i.radius, i.a, i.b, i.c, i.length});
+  // The reference point (centre or tip) above the apex's contact point by twice the indenter's
+  // size: clear of the shell; the first touch is found from there (indenter.hpp).
+  const Vector3d top = model.mesh.nodes[apex] + contact_face_offset(c) * model.mesh.directors[apex];
+  pose.position = top - (2 * size + 1.0) * pose.direction;
+  return pose;
+}
+
+IndentationSetup::IndentationSetup(CaseFile c, int threads)
+    : case_file(std::move(c)), model(build_shell_model(case_file)) {
+  pose = default_indenter_pose(case_file, model);
+  try {
+    indenter = make_indenter(case_file.indenter, pose);
+    problem = std::make_unique<IndentationProblem>(model, *indenter, pose.direction,
+                                                   options_of(case_file, threads));
+  } catch (const Error& e) {
+    throw e.within(Where{case_file.file, "indenter", "", 0});
+  }
+}
+
+std::vector<double> depth_grid(const PathSpec& path) {
+  if (!path.depths.empty()) return path.depths;
+  std::vector<double> grid;
+  const int n = static_cast<int>(std::ceil(path.depth_max / path.step - 1e-9));
+  for (int i = 1; i <= n; ++i) grid.push_back(std::min(path.depth_max, i * path.step));
+  return grid;
+}
+
+PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback) {
+  if (setup.model.kinematics == Kinematics::kLinear) return run_linear(setup, callback);
+  if (setup.case_file.contact.solver == ContactSolver::kActiveSet)
+    return run_active_set(setup, callback);
+  return run_continuation(setup, callback);
+}
+
+}  // namespace si

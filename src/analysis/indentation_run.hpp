@@ -1,0 +1,68 @@
+// A depth path of a case file, end to end: the model, the indenter at its pose, the contact
+// problem, and the path method (docs/case-file.md `path`, `contact`):
+//  * linear kinematics: the linear fast path (linear_indentation.hpp) at each depth of the grid
+//    - exact for the linear problem, which has no limit points, so `path.method` is not needed;
+//  * nonlinear, contact.solver kinsol: continuation/ natural (the depth grid, hit exactly) or
+//    pseudo_arclength (to depth_max, through limit points), with the KINSOL corrector on the
+//    Fischer-Burmeister system, events located (force extrema, inflections of T_N against k11
+//    and k22 - the paper's critical force -, limit points of the depth, contact-set changes);
+//  * nonlinear, contact.solver active_set: the primal-dual active-set method at each depth of the
+//    grid (the cross-check solver, active_set_solver.hpp).
+// The depth grid is path.depths, or 0, step, 2 step, ..., depth_max.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/indentation_problem.hpp"
+#include "analysis/shell_model.hpp"
+#include "continuation/branch.hpp"
+#include "io/case_file.hpp"
+
+namespace si {
+
+// Model, indenter and contact problem of a case, kept together (the problem refers to both).
+struct IndentationSetup {
+  CaseFile case_file;
+  ShellModel model;
+  IndenterPose pose;
+  std::unique_ptr<Indenter> indenter;
+  std::unique_ptr<IndentationProblem> problem;
+
+  // Throws an input error naming the case file and key for a case that cannot run.
+  IndentationSetup(CaseFile c, int threads);
+};
+
+// Where the indenter starts when the case does not say: on the apex normal, clear of the shell.
+IndenterPose default_indenter_pose(const CaseFile& c, const ShellModel& model);
+
+struct PathPoint {
+  IndentationState state;
+  int iterations = 0;  // corrector (Newton / active-set) iterations that produced the point
+  double step = 0;     // step that produced it (depth for grids, arclength for pseudo_arclength)
+  double work = 0;     // indenter work so far, trapezoidal integral of force over depth, N mm
+};
+
+struct PathResult {
+  std::string method;  // "linear fast path", "natural", "pseudo_arclength", "active_set"
+  std::vector<PathPoint> points;
+  std::vector<cont::Event> events;
+  std::vector<std::string> monitor_names;
+  bool completed = false;  // reached the end of the path
+  std::string status;      // e.g. "completed", "reached_bound", "step_too_small", "stopped"
+  std::string reason;      // why it stopped early; empty when completed
+};
+
+// Called after each accepted point with the point and the problem's unknowns; returning false
+// stops the run (status "stopped", every converged point kept).
+using PathCallback = std::function<bool(const PathPoint&, const cont::Vector& z)>;
+
+// The depth grid of a path section.
+std::vector<double> depth_grid(const PathSpec& path);
+
+// Runs the path. Numerical failures do not throw: they end the path with the reason.
+PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback = {});
+
+}  // namespace si

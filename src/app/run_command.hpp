@@ -1,0 +1,28 @@
+// `shellindent run [CASE.yaml] [--out DIR] [--threads N]`: the indentation depth path of a case
+// (analysis/indentation_run.hpp). Without a case file it runs the built-in default, the source
+// paper's cap with [0/0]2S (default_case_yaml()). Prints a progress line per converged point to
+// `err` and the force-depth table to `out`; writes DIR/path.csv, DIR/path.json, DIR/events.json
+// and VTU files of chosen points (output.vtu_every) with a ParaView collection DIR/path.pvd, each
+// file atomically. A run that stops early (no convergence at the minimum step, Ctrl-C) keeps and
+// writes every converged point, says where and why it stopped, and returns 1.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+namespace si {
+
+struct RunCommandOptions {
+  std::string case_file;  // empty: the built-in default case
+  std::string out_dir;    // empty: the case's output.dir
+  int threads = 0;        // 0: OpenMP's default
+};
+
+int run_run_command(const RunCommandOptions& options, std::ostream& out, std::ostream& err);
+
+// The built-in default case: the paper's clamped carbon/epoxy cap, [0/0]2S (specially
+// orthotropic, so a quarter model is exact), 12.7 mm sphere on the outer face, nonlinear, 0 to
+// 10 mm by pseudo-arclength with 0.1 mm steps.
+std::string default_case_yaml();
+
+}  // namespace si

@@ -1,0 +1,120 @@
+#include "io/path_results.hpp"
+
+#include <sstream>
+
+namespace si {
+namespace {
+
+const char* kColumns[] = {"depth_mm",
+                          "force_N",
+                          "reaction_N",
+                          "apex_w_mm",
+                          "contact_radius_mm",
+                          "contact_area_mm2",
+                          "contact_nodes",
+                          "k11_per_mm",
+                          "k12_per_mm",
+                          "k22_per_mm",
+                          "energy_Nmm",
+                          "work_Nmm",
+                          "min_gap_mm",
+                          "min_multiplier_N",
+                          "max_complementarity_Nmm",
+                          "iterations",
+                          "step"};
+
+std::vector<double> values(const PathPoint& p) {
+  const IndentationState& s = p.state;
+  return {s.depth,
+          s.force,
+          s.reaction,
+          s.apex_deflection,
+          s.contact_radius,
+          s.contact_area,
+          static_cast<double>(s.contact_nodes),
+          s.apex_curvature[0],
+          s.apex_curvature[1],
+          s.apex_curvature[2],
+          s.energy,
+          p.work,
+          s.min_gap,
+          s.min_multiplier,
+          s.max_complementarity,
+          static_cast<double>(p.iterations),
+          p.step};
+}
+
+double monitor(const cont::Event& e, const std::vector<std::string>& names,
+               const std::string& name) {
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name && static_cast<Eigen::Index>(i) < e.monitors.size())
+      return e.monitors[static_cast<Eigen::Index>(i)];
+  return 0.0;
+}
+
+}  // namespace
+
+std::string path_csv_header() {
+  std::string h;
+  for (const char* c : kColumns) h += (h.empty() ? "" : ",") + std::string(c);
+  return h;
+}
+
+std::string path_csv(const PathResult& result) {
+  std::ostringstream os;
+  os.precision(12);
+  os << path_csv_header() << '\n';
+  for (const PathPoint& p : result.points) {
+    const std::vector<double> v = values(p);
+    for (std::size_t i = 0; i < v.size(); ++i) os << (i ? "," : "") << v[i];
+    os << '\n';
+  }
+  return os.str();
+}
+
+nlohmann::json events_json(const PathResult& result) {
+  nlohmann::json events = nlohmann::json::array();
+  for (const cont::Event& e : result.events)
+    events.push_back({{"type", e.name},
+                      {"monitor", e.monitor},
+                      {"against", e.against},
+                      {"depth_mm", e.p},
+                      {"force_N", monitor(e, result.monitor_names, "force_N")},
+                      {"k11_per_mm", monitor(e, result.monitor_names, "k11_per_mm")},
+                      {"k22_per_mm", monitor(e, result.monitor_names, "k22_per_mm")},
+                      {"step", e.step},
+                      {"located", e.located},
+                      {"accuracy", e.accuracy}});
+  return events;
+}
+
+nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result) {
+  const ShellModel& m = setup.model;
+  nlohmann::json points = nlohmann::json::array();
+  for (const PathPoint& p : result.points) {
+    nlohmann::json row;
+    const std::vector<double> v = values(p);
+    for (std::size_t i = 0; i < v.size(); ++i) row[kColumns[i]] = v[i];
+    points.push_back(row);
+  }
+  return {{"case", setup.case_file.file},
+          {"method", result.method},
+          {"element", m.element->name()},
+          {"kinematics", m.kinematics == Kinematics::kLinear ? "linear" : "nonlinear"},
+          {"nodes", m.mesh.num_nodes()},
+          {"elements", m.mesh.num_elements()},
+          {"shell_unknowns", setup.problem->num_shell_unknowns()},
+          {"contact_candidates", setup.problem->candidates().size()},
+          {"symmetry_factor", m.symmetry_factor},
+          {"first_touch_travel_mm", setup.problem->first_touch()},
+          {"note",
+           "whole-shell values (a quarter model's forces, areas and energies times 4); depth = "
+           "indenter travel after first touch; force along the direction of travel"},
+          {"status", result.status},
+          {"completed", result.completed},
+          {"reason", result.reason},
+          {"points", points},
+          {"events", events_json(result)}};
+}
+
+}  // namespace si

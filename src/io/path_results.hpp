@@ -1,0 +1,24 @@
+// The results files of an indentation run (`shellindent run`, docs/results.md):
+//   path.csv    one row per converged point, columns (whole-shell values):
+//     depth_mm, force_N, reaction_N, apex_w_mm, contact_radius_mm, contact_area_mm2,
+//     contact_nodes, k11_per_mm, k12_per_mm, k22_per_mm, energy_Nmm, work_Nmm, min_gap_mm,
+//     min_multiplier_N, max_complementarity_Nmm, iterations, step
+//   path.json   the same points plus the run's description, status and events
+//   events.json the located events (type, monitor, depth, force, curvatures, step)
+// Text is produced here; the caller writes it atomically (io/atomic_file.hpp).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "analysis/indentation_run.hpp"
+
+namespace si {
+
+// The header line of path.csv (without newline).
+std::string path_csv_header();
+std::string path_csv(const PathResult& result);
+nlohmann::json events_json(const PathResult& result);
+nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result);
+
+}  // namespace si
