@@ -170,13 +170,16 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback) {
 
 IndenterPose default_indenter_pose(const CaseFile& c, const ShellModel& model) {
   IndenterPose pose;
+  pose.direction = c.indenter.direction;
+  pose.axis = c.indenter.axis;
   const int apex = model.apex_node();
   const IndenterSpec& i = c.indenter;
   const double size = std::max({i.radius, i.a, i.b, i.c, i.length});
   // The reference point (centre or tip) above the apex's contact point by twice the indenter's
   // size: clear of the shell; the first touch is found from there (indenter.hpp).
   const Vector3d top = model.mesh.nodes[apex] + contact_face_offset(c) * model.mesh.directors[apex];
-  pose.position = top - (2 * size + 1.0) * pose.direction;
+  pose.position = c.indenter.position ? *c.indenter.position
+                                      : Vector3d(top - (2 * size + 1.0) * pose.direction);
   return pose;
 }
 

@@ -35,7 +35,8 @@ struct IndentationSetup {
   IndentationSetup(CaseFile c, int threads);
 };
 
-// Where the indenter starts when the case does not say: on the apex normal, clear of the shell.
+// The indenter's pose: the case's indenter.position/direction/axis; without a position, the
+// reference point starts on the apex's line of travel, clear of the shell.
 IndenterPose default_indenter_pose(const CaseFile& c, const ShellModel& model);
 
 struct PathPoint {

@@ -113,6 +113,30 @@ double read_exponent(const MapReader& map, const std::string& key) {
   return e;
 }
 
+// A list of three quantities of one dimension, e.g. position: [0 mm, 0 mm, 30 mm].
+Vector3d read_vector(const MapReader& map, const std::string& key, Dimension dim) {
+  const YAML::Node node = map.at(key);
+  if (!node.IsSequence() || node.size() != 3)
+    throw_input("expected a list of three values, e.g. [0, 0, -1]", map.where(key));
+  Vector3d v;
+  for (int i = 0; i < 3; ++i) {
+    try {
+      v[i] = parse_quantity(text_of(node[i]), dim);
+    } catch (const Error& e) {
+      throw e.within(map.where(key));
+    }
+  }
+  return v;
+}
+
+Vector3d read_unit_vector(const MapReader& map, const std::string& key, const Vector3d& fallback) {
+  if (!map.has(key)) return fallback;
+  const Vector3d v = read_vector(map, key, Dimension::kDimensionless);
+  if (!(v.norm() > 0) || !v.allFinite())
+    throw_input("must be a non-zero direction", map.where(key));
+  return v.normalized();
+}
+
 IndenterSpec read_indenter(const MapReader& top) {
   IndenterSpec indenter;
   const auto map = section(top, "indenter");
@@ -120,11 +144,11 @@ IndenterSpec read_indenter(const MapReader& top) {
   indenter.shape = map->choice_or("shape", kShapes, indenter.shape);
   switch (indenter.shape) {
     case IndenterShape::kSphere:
-      map->allow_only({"shape", "radius", "material"});
+      map->allow_only({"shape", "radius", "material", "position", "direction"});
       indenter.radius = map->positive("radius", Dimension::kLength);
       break;
     case IndenterShape::kSuperquadric:
-      map->allow_only({"shape", "a", "b", "c", "e1", "e2", "material"});
+      map->allow_only({"shape", "a", "b", "c", "e1", "e2", "material", "position", "direction"});
       indenter.a = map->positive("a", Dimension::kLength);
       indenter.b = map->positive("b", Dimension::kLength);
       indenter.c = map->positive("c", Dimension::kLength);
@@ -132,20 +156,23 @@ IndenterSpec read_indenter(const MapReader& top) {
       indenter.e2 = read_exponent(*map, "e2");
       break;
     case IndenterShape::kFlatPunch:
-      map->allow_only({"shape", "radius", "edge_radius", "material"});
+      map->allow_only({"shape", "radius", "edge_radius", "material", "position", "direction"});
       indenter.radius = map->positive("radius", Dimension::kLength);
       indenter.edge_radius = map->quantity_or("edge_radius", Dimension::kLength, 0.0);
       if (indenter.edge_radius < 0.0 || indenter.edge_radius >= indenter.radius)
         throw_input("must lie in [0, radius)", map->where("edge_radius"));
       break;
     case IndenterShape::kCylinder:
-      map->allow_only({"shape", "radius", "length", "material"});
+      map->allow_only({"shape", "radius", "length", "material", "position", "direction", "axis"});
       indenter.radius = map->positive("radius", Dimension::kLength);
       indenter.length = map->positive("length", Dimension::kLength);
       break;
   }
   if (map->has("material") && text_of(map->at("material")) != "rigid")
     indenter.material = read_material(map->at("material"), map->where("material"));
+  if (map->has("position")) indenter.position = read_vector(*map, "position", Dimension::kLength);
+  indenter.direction = read_unit_vector(*map, "direction", indenter.direction);
+  indenter.axis = read_unit_vector(*map, "axis", indenter.axis);
   return indenter;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/linalg.hpp"
 #include "material/material.hpp"
 #include "model/symmetry.hpp"
 #include "section/laminate.hpp"
@@ -59,6 +60,12 @@ struct IndenterSpec {
   // e1 = e2 = 1 is an ellipsoid, smaller values are boxier. 0 < e <= 2 keeps it convex.
   double e1 = 1, e2 = 1;
   std::optional<Material> material;  // empty: rigid
+  // Pose (contact/indenter.hpp IndenterPose). Position of the reference point (sphere,
+  // super-quadric and cylinder centre, flat-punch tip) at travel 0, mm; empty: on the apex
+  // normal, clear of the shell. The depth is the travel after first touch, found automatically.
+  std::optional<Vector3d> position;
+  Vector3d direction{0, 0, -1};  // direction of travel (normalised when read)
+  Vector3d axis{0, 1, 0};        // cylinder axis
 };
 
 enum class ContactSurface { kOuter, kMid };
