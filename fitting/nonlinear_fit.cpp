@@ -151,10 +151,11 @@ Eigen::VectorXd parameter_scale(const FitSettings& s) {
 
 FitResult fit(const LeastSquaresProblem& problem, const FitSettings& s) {
   check_settings(problem, s);
-  Evaluator ev(problem, parameter_scale(s));
+  const Eigen::VectorXd scale = parameter_scale(s);
+  Evaluator ev(problem, scale);
   Objective o;
   o.evaluator = &ev;
-  o.scale = parameter_scale(s);
+  o.scale = scale;
   o.best = s.start;
   if (!std::isfinite(ev.sum_of_squares(ev.residuals(s.start))))
     throw std::invalid_argument("the residuals are not finite at the starting values");
