@@ -42,6 +42,17 @@ Eigen::VectorXd damped_step(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r
   return a.colPivHouseholderQr().solve(b);
 }
 
+// |D d| / |D c|: how far a step moves the parameters, relatively, in the norm scaled by D (Moré
+// 1978, sec. 7), so that a parameter near zero (an offset that vanishes) does not count alone.
+double relative_size(const Eigen::VectorXd& d, const Eigen::VectorXd& c, const Eigen::VectorXd& D) {
+  const double size = D.cwiseProduct(c).norm();
+  return size > 0.0 ? D.cwiseProduct(d).norm() / size : D.cwiseProduct(d).norm();
+}
+
+// Relative Gauss-Newton correction below which a point counts as converged when no step
+// decreases S any more: sqrt(eps), the accuracy a double-precision minimum can be located to.
+constexpr double kResolution = 1.5e-8;
+
 std::string scientific(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.0e", v);
@@ -94,9 +105,7 @@ LevenbergMarquardtOutcome levenberg_marquardt(Evaluator& ev, const Eigen::Vector
       const Eigen::VectorXd r_trial = ev.residuals(trial);
       const double sse_trial = ev.sum_of_squares(r_trial);
       if (sse_trial < sse) {
-        const double move = ((trial - c).cwiseAbs().array() /
-                             trial.cwiseAbs().cwiseMax(std::numeric_limits<double>::min()).array())
-                                .maxCoeff();
+        const double move = relative_size(trial - c, trial, diag);
         c = trial;
         r = r_trial;
         sse = sse_trial;
@@ -112,9 +121,12 @@ LevenbergMarquardtOutcome levenberg_marquardt(Evaluator& ev, const Eigen::Vector
       }
       lambda *= 4.0;
       if (lambda > kLambdaMax || c == trial) {
-        // No decrease even along the steepest-descent direction: at the minimum to roundoff,
-        // provided the gradient test nearly holds.
-        out.converged = gradient_cosine(jac, r) <= std::sqrt(settings.gradient_tol);
+        // No decrease even along the steepest-descent direction: S is at its roundoff floor if
+        // the gradient test nearly holds, or if the Gauss-Newton correction is below the
+        // resolution double-precision data support (for data exact to 12 digits the residuals
+        // are rounding noise, not orthogonal to J, yet the correction is ~1e-12 relative).
+        out.converged = gradient_cosine(jac, r) <= std::sqrt(settings.gradient_tol) ||
+                        relative_size(damped_step(jac, r, diag, 0.0), c, diag) <= kResolution;
         out.reason = out.converged ? "no further decrease possible (roundoff level)"
                                    : "no decrease along the damped steps";
         return out;

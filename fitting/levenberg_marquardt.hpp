@@ -19,7 +19,7 @@ namespace si::fit {
 
 struct LevenbergMarquardtSettings {
   int max_iterations = 200;
-  double xtol_rel = 1e-12;      // converged when no parameter moves by more than this, relatively
+  double xtol_rel = 1e-12;      // converged when |D step| <= xtol_rel |D c| (Moré 1978, D below)
   double gradient_tol = 1e-10;  // ... or when cos(r, J e_j) <= this for all j (MINPACK's gtol)
 };
 

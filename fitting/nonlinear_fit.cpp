@@ -122,6 +122,10 @@ void check_settings(const LeastSquaresProblem& p, const FitSettings& s) {
     throw std::invalid_argument("starting values: " + std::to_string(s.start.size()) +
                                 " given for " + std::to_string(n) + " parameters");
   if (!s.start.allFinite()) throw std::invalid_argument("starting values must be finite");
+  if (p.num_residuals < n)
+    throw std::invalid_argument(std::to_string(n) + " parameters need at least " +
+                                std::to_string(n) + " points, got " +
+                                std::to_string(p.num_residuals));
   for (const auto* bound : {&s.lower, &s.upper})
     if (bound->size() != 0 && bound->size() != n)
       throw std::invalid_argument("bounds must have one value per parameter");

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <string>
 
 #include "fitting/builtin_models.hpp"
 #include "fitting/nonlinear_fit.hpp"
@@ -31,6 +33,23 @@ TEST(NonlinearFit, BoundStopsTheExponentAndIsReported) {
   EXPECT_FALSE(r.at_bound[0]);
 }
 
+// Exact data rounded to 12 digits (as a CSV file carries them): the residuals are rounding noise,
+// no step decreases S any more, and the fit must still report convergence.
+TEST(NonlinearFit, DataRoundedTo12DigitsConverges) {
+  const Eigen::VectorXd x = grid(0.2, 2.0, 19);
+  for (const double offset : {3.0, 0.0}) {  // 0: a parameter whose value is rounding noise
+    Eigen::VectorXd y(x.size());
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.12g", 350.0 * std::pow(x[i], 1.37) + offset);
+      y[i] = std::stod(buf);
+    }
+    const FitResult r = fit_curve(power_law_with_offset(), x, y);
+    EXPECT_EQ(r.status, FitStatus::kConverged) << offset << ": " << r.reason;
+    EXPECT_NEAR(r.parameters[1], 1.37, 1e-8);
+  }
+}
+
 TEST(NonlinearFit, RejectsInconsistentSettings) {
   const auto p = curve_problem(power_law(), grid(0.1, 2.0, 10), grid(1.0, 5.0, 10));
   FitSettings s;
@@ -44,6 +63,9 @@ TEST(NonlinearFit, RejectsInconsistentSettings) {
   s.start = Eigen::Vector2d(1.0, -1.0);
   const auto at_zero = curve_problem(power_law(), grid(0.0, 2.0, 10), grid(1.0, 5.0, 10));
   EXPECT_THROW(fit(at_zero, s), std::invalid_argument);  // 0^-1: residuals not finite
+  const auto one_point = curve_problem(power_law(), grid(1.0, 1.0, 1), grid(1.0, 1.0, 1));
+  s.start = Eigen::Vector2d(1.0, 1.0);
+  EXPECT_THROW(fit(one_point, s), std::invalid_argument);  // 2 parameters, 1 point
 }
 
 // A problem given by residuals only (no observations, no Jacobian): the Rosenbrock function as
