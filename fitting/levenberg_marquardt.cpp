@@ -18,13 +18,20 @@ Eigen::VectorXd project(const Eigen::VectorXd& c, const Eigen::VectorXd& lower,
 
 // The largest cosine between the residual vector and a column of J: zero at a stationary point
 // of the sum of squares, whatever the scaling (Moré, Garbow & Hillstrom 1980, MINPACK gtol).
-double gradient_cosine(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r) {
+// Parameters held by a bound that the descent direction pushes against are left out (the
+// projected gradient of a bound-constrained minimum).
+double gradient_cosine(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r,
+                       const Eigen::VectorXd& c, const Eigen::VectorXd& lower,
+                       const Eigen::VectorXd& upper) {
   const double rn = r.norm();
   if (rn == 0.0) return 0.0;
   double worst = 0.0;
   for (Eigen::Index j = 0; j < jac.cols(); ++j) {
+    const double g = jac.col(j).dot(r);  // half the derivative of S in c_j
+    const bool held = (lower.size() == c.size() && c[j] <= lower[j] && g > 0.0) ||
+                      (upper.size() == c.size() && c[j] >= upper[j] && g < 0.0);
     const double cn = jac.col(j).norm();
-    if (cn > 0.0) worst = std::max(worst, std::abs(jac.col(j).dot(r)) / (cn * rn));
+    if (cn > 0.0 && !held) worst = std::max(worst, std::abs(g) / (cn * rn));
   }
   return worst;
 }
@@ -91,7 +98,7 @@ LevenbergMarquardtOutcome levenberg_marquardt(Evaluator& ev, const Eigen::Vector
       out.reason = "the Jacobian is not finite";
       return out;
     }
-    if (gradient_cosine(jac, r) <= settings.gradient_tol) {
+    if (gradient_cosine(jac, r, c, lower, upper) <= settings.gradient_tol) {
       out.converged = true;
       out.reason = "residuals orthogonal to the Jacobian (gradient test)";
       return out;
@@ -125,8 +132,10 @@ LevenbergMarquardtOutcome levenberg_marquardt(Evaluator& ev, const Eigen::Vector
         // the gradient test nearly holds, or if the Gauss-Newton correction is below the
         // resolution double-precision data support (for data exact to 12 digits the residuals
         // are rounding noise, not orthogonal to J, yet the correction is ~1e-12 relative).
-        out.converged = gradient_cosine(jac, r) <= std::sqrt(settings.gradient_tol) ||
-                        relative_size(damped_step(jac, r, diag, 0.0), c, diag) <= kResolution;
+        const Eigen::VectorXd newton = project(c + damped_step(jac, r, diag, 0.0), lower, upper);
+        out.converged =
+            gradient_cosine(jac, r, c, lower, upper) <= std::sqrt(settings.gradient_tol) ||
+            relative_size(newton - c, c, diag) <= kResolution;
         out.reason = out.converged ? "no further decrease possible (roundoff level)"
                                    : "no decrease along the damped steps";
         return out;

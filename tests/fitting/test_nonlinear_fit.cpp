@@ -28,6 +28,7 @@ TEST(NonlinearFit, BoundStopsTheExponentAndIsReported) {
   s.lower = Eigen::Vector2d(0.0, 0.5);
   s.upper = Eigen::Vector2d(1e4, 1.2);  // the true exponent 1.37 is outside
   const FitResult r = fit_curve(power_law(), x, sample(x, curve, 0.0, 0), s);
+  EXPECT_EQ(r.status, FitStatus::kConverged) << r.reason;  // a bound-constrained minimum
   EXPECT_DOUBLE_EQ(r.parameters[1], 1.2);
   EXPECT_TRUE(r.at_bound[1]);
   EXPECT_FALSE(r.at_bound[0]);
