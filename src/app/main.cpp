@@ -6,6 +6,7 @@
 #include <iostream>
 #include <string>
 
+#include "app/fit_command.hpp"
 #include "app/run_command.hpp"
 #include "app/section_command.hpp"
 #include "app/static_command.hpp"
@@ -56,6 +57,20 @@ constexpr const char* kRunHelp =
     "  shellindent run                                   (the paper's cap, results/paper_cap/)\n"
     "  shellindent run studies/paper_cap.yaml --out results/cap_0_90";
 
+constexpr const char* kFitHelp =
+    "Fit a curve to two columns of a CSV file (header line required): y = C1 x^C2 fitted in linear "
+    "space (power) or in log space (power-log), y = C x^1.5 (hertz), y = C1 x^C2 + C0 "
+    "(power-offset), or a polynomial (poly, degree given or chosen by leave-one-out, AIC or AICc). "
+    "Prints "
+    "the parameters with standard errors and 95% intervals, R^2, Pearson r and RMSE, and writes "
+    "them with the residuals as JSON (default DATA.fit-MODEL.json beside the CSV). A fit with as "
+    "many parameters as points is flagged as interpolation. Exit 1 if the fit does not converge. "
+    "See docs/fitting.md.\n"
+    "Examples:\n"
+    "  shellindent fit results/cap/static.csv --model power --x apex_deflection_mm --y force_N\n"
+    "  shellindent fit c1.csv --model poly --x angle_deg --y C1 --degree auto\n"
+    "  shellindent fit path.csv --model power-log --x depth_mm --y force_N --range 0.1:10";
+
 int run(int argc, char** argv) {
   CLI::App app{kDescription, "shellindent"};
   app.set_version_flag("--version", SHELLINDENT_VERSION);
@@ -103,6 +118,22 @@ int run(int argc, char** argv) {
   run_cmd->add_option("--out", ro.out_dir, "output directory (default: output.dir of the case)");
   run_cmd->add_option("--threads", ro.threads, "assembly threads (0: OpenMP default)")
       ->capture_default_str();
+  si::FitCommandOptions fo;
+  auto* fit_cmd = app.add_subcommand("fit", kFitHelp);
+  fit_cmd->add_option("data", fo.data_file, "CSV file with a header line")
+      ->required()
+      ->check(CLI::ExistingFile);
+  fit_cmd->add_option("--model", fo.model, "power, power-log, hertz, power-offset or poly")
+      ->required();
+  fit_cmd->add_option("--x", fo.x_column, "column of the independent variable")->required();
+  fit_cmd->add_option("--y", fo.y_column, "column of the dependent variable")->required();
+  fit_cmd->add_option("--degree", fo.degree, "poly: degree N, or auto (default)");
+  fit_cmd
+      ->add_option("--criterion", fo.criterion, "--degree auto: loo (leave-one-out), aic or aicc")
+      ->capture_default_str();
+  fit_cmd->add_option("--range", fo.range,
+                      "fit only points with x in [a, b]: a:b, a: or :b (negative a: --range=-1:5)");
+  fit_cmd->add_option("--json", fo.json_path, "JSON output (default: DATA.fit-MODEL.json)");
 
   auto* materials = app.add_subcommand("materials", "List the built-in material library.");
 
@@ -135,6 +166,7 @@ int run(int argc, char** argv) {
   if (*section) return si::run_section_command(so, std::cout);
   if (*static_cmd) return si::run_static_command(sto, std::cout, std::cerr);
   if (*run_cmd) return si::run_run_command(ro, std::cout, std::cerr);
+  if (*fit_cmd) return si::run_fit_command(fo, std::cout, std::cerr);
   if (*materials) return si::run_materials_command(std::cout);
   if (*layup) return si::run_layup_command(notation, std::cout);
   return 2;
