@@ -62,15 +62,13 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
   double touch = 0;
   try {
     touch = indenter.first_touch(points);
-  } catch (const Error& e) {
-    throw_input(
-        "the indenter never touches the shell along its direction of travel (" + e.reason() + ")",
-        Where{"", "indenter", indenter.name(), 0});
+  } catch (const Error&) {
+    throw_input("the " + indenter.name() +
+                " indenter never touches the shell along its direction of travel");
   }
   if (touch < 0)
-    throw_input("the indenter starts inside the shell (it would have touched it " +
-                    std::to_string(-touch) + " mm before its start position)",
-                Where{"", "indenter", indenter.name(), 0});
+    throw_input("the " + indenter.name() + " indenter starts inside the shell (it would have " +
+                "touched it " + std::to_string(-touch) + " mm before its start position)");
 
   // Exact touch travels of the reachable nodes; t0 = the smallest.
   std::vector<int> reachable;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "analysis/active_set_solver.hpp"
 #include "analysis/linear_indentation.hpp"
@@ -191,7 +192,14 @@ IndentationSetup::IndentationSetup(CaseFile c, int threads)
     problem = std::make_unique<IndentationProblem>(model, *indenter, pose.direction,
                                                    options_of(case_file, threads));
   } catch (const Error& e) {
-    throw e.within(Where{case_file.file, "indenter", "", 0});
+    const auto text = [](const Vector3d& v) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "[%g, %g, %g]", v.x(), v.y(), v.z());
+      return std::string(buf);
+    };
+    const std::string where = case_file.indenter.position ? "indenter.position" : "indenter";
+    const std::string value = text(pose.position) + " mm, direction " + text(pose.direction);
+    throw e.within(Where{case_file.file, where, value, 0});
   }
 }
 
