@@ -234,6 +234,7 @@ void IndentationProblem::shell_terms(const cont::Vector& z, double h, bool tange
 }
 
 bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector& F) {
+  ++counters_.residuals;
   const int nf = chart_.size();
   cont::Vector r;
   try {
@@ -253,6 +254,7 @@ bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector&
 }
 
 bool IndentationProblem::factorize(const cont::Vector& z, double h) {
+  ++counters_.factorizations;
   const int nf = chart_.size();
   cont::Vector r_free;
   try {
@@ -297,6 +299,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
 }
 
 bool IndentationProblem::solve(cont::Vector& b) {
+  ++counters_.solves;
   b = solver_->solve(b);
   return b.allFinite();
 }
@@ -404,6 +407,7 @@ Eigen::VectorXd IndentationProblem::reference_gaps() const {
 IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   if (cached_state_ && h == cached_h_ && z.size() == cached_z_.size() && z == cached_z_)
     return *cached_state_;
+  ++counters_.evaluations;
   const Mesh& mesh = model_.mesh;
   const int nf = chart_.size();
   const double sym = model_.symmetry_factor;

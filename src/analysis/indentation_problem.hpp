@@ -65,6 +65,14 @@ struct IndentationState {
   std::vector<double> pressures;    // lambda / tributary area per candidate, MPa
 };
 
+// Work done so far, for benchmarks and the run summary.
+struct IndentationCounters {
+  long residuals = 0;       // residual evaluations (each one element assembly, force only)
+  long factorizations = 0;  // Jacobian assemblies + sparse LU factorizations
+  long solves = 0;          // back-substitutions
+  long evaluations = 0;     // evaluate() calls that were not cached (output, monitors)
+};
+
 class IndentationProblem : public cont::Problem {
  public:
   // Keeps references to model and indenter. `direction` is the indenter's unit direction of
@@ -106,6 +114,7 @@ class IndentationProblem : public cont::Problem {
   Eigen::VectorXd reference_gaps() const;
   IndentationState evaluate(const cont::Vector& z, double h);
   const ShellModel& model() const { return model_; }
+  const IndentationCounters& counters() const { return counters_; }
   const DofMap& dofs() const { return dofs_; }
   const Assembler& assembler() const { return assembler_; }
 
@@ -138,6 +147,7 @@ class IndentationProblem : public cont::Problem {
   std::unique_ptr<LinearSolver> solver_;
   bool analyzed_ = false;
   std::vector<NodeState> scratch_states_;
+  IndentationCounters counters_;
   // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.
   cont::Vector cached_z_;
   double cached_h_ = 0;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "analysis/active_set_solver.hpp"
+#include "analysis/critical_force.hpp"
 #include "analysis/linear_indentation.hpp"
 #include "contact/indenter_factory.hpp"
 #include "continuation/kinsol_corrector.hpp"
@@ -141,7 +142,8 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   c.newton.residual_scale = s.problem->stiffness_scale() * path.step;
   c.newton.max_iterations = 25;
   c.extremum_monitors = {"force_N"};
-  c.inflections = {{"force_N", "k11_per_mm"}, {"force_N", "k22_per_mm"}};
+  // Inflections of T_N against k11, k22 (the critical force) come from the points afterwards
+  // (critical_force.hpp): located ones would sit on every contact-set change.
   c.detect_signature_changes = true;
   c.locate_signature_changes = false;  // contact grows node by node: report, do not bisect
   if (c.method == cont::Method::kNatural) c.parameter_values = depth_grid(path);
@@ -212,10 +214,15 @@ std::vector<double> depth_grid(const PathSpec& path) {
 }
 
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback) {
-  if (setup.model.kinematics == Kinematics::kLinear) return run_linear(setup, callback);
-  if (setup.case_file.contact.solver == ContactSolver::kActiveSet)
-    return run_active_set(setup, callback);
-  return run_continuation(setup, callback);
+  PathResult r = setup.model.kinematics == Kinematics::kLinear ? run_linear(setup, callback)
+                 : setup.case_file.contact.solver == ContactSolver::kActiveSet
+                     ? run_active_set(setup, callback)
+                     : run_continuation(setup, callback);
+  for (int k : {0, 2}) {
+    const std::vector<cont::Event> found = critical_force_events(r.points, k);
+    r.events.insert(r.events.end(), found.begin(), found.end());
+  }
+  return r;
 }
 
 }  // namespace si

@@ -110,6 +110,11 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
           {"note",
            "whole-shell values (a quarter model's forces, areas and energies times 4); depth = "
            "indenter travel after first touch; force along the direction of travel"},
+          {"work",
+           {{"residuals", setup.problem->counters().residuals},
+            {"factorizations", setup.problem->counters().factorizations},
+            {"solves", setup.problem->counters().solves},
+            {"evaluations", setup.problem->counters().evaluations}}},
           {"status", result.status},
           {"completed", result.completed},
           {"reason", result.reason},
