@@ -99,6 +99,10 @@ class Tracer {
       }
       const double nominal = state_.step;
       const double ds = std::min(nominal, stepper_.distance_to_target(state_));
+      if (!(ds > 0.0)) {  // natural, started on the bound ahead
+        finish(Status::kReachedBound, "p is on the bound " + fmt(state_.current.point.p));
+        return;
+      }
       StepResult step;
       TangentPoint b;
       std::string why;

@@ -56,7 +56,7 @@ class BratuProblem final : public Problem {
     return b.allFinite();
   }
 
-  int jacobian_sign() const override { return sign_; }
+  int jacobian_sign() override { return sign_; }
 
   double inner(const Vector& a, const Vector& b) const override { return h_ * a.dot(b); }
 
