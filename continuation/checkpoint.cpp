@@ -45,8 +45,8 @@ Vector to_vector(const json& j) {
   return v;
 }
 
-json point_json(const Point& p) {
-  return {{"x", vector(p.x)},
+json point_json(const Point& p, bool with_x = true) {
+  return {{"x", with_x ? vector(p.x) : json::array()},
           {"p", number(p.p)},
           {"tangent_p", number(p.tangent_p)},
           {"monitors", vector(p.monitors)},
@@ -119,9 +119,9 @@ Status to_status(const std::string& name) {
   throw std::runtime_error("unknown status '" + name + "'");
 }
 
-json branch_json(const Branch& b) {
+json branch_json(const Branch& b, bool points_x) {
   json points = json::array();
-  for (const auto& p : b.points) points.push_back(point_json(p));
+  for (const auto& p : b.points) points.push_back(point_json(p, points_x));
   json events = json::array();
   for (const auto& e : b.events) events.push_back(event_json(e));
   return {
@@ -162,11 +162,11 @@ State to_state(const json& j) {
 
 }  // namespace
 
-void save_checkpoint(const std::string& path, const Checkpoint& checkpoint) {
+void save_checkpoint(const std::string& path, const Checkpoint& checkpoint, bool points_x) {
   const json j = {{"format", kFormat},
                   {"version", kVersion},
                   {"method", method_name(checkpoint.method)},
-                  {"branch", branch_json(checkpoint.branch)},
+                  {"branch", branch_json(checkpoint.branch, points_x)},
                   {"state", state_json(checkpoint.state)}};
   const std::string tmp = path + ".tmp";
   {

@@ -19,7 +19,9 @@ struct Checkpoint {
 
 // Writes `path` atomically: to "<path>.tmp" first, then renamed over `path`, so a run killed
 // while writing leaves the previous checkpoint intact. Throws std::runtime_error on I/O errors.
-void save_checkpoint(const std::string& path, const Checkpoint& checkpoint);
+// With points_x = false the branch's points are written without x (see
+// Settings::checkpoint_keeps_x); the state keeps its x in any case.
+void save_checkpoint(const std::string& path, const Checkpoint& checkpoint, bool points_x = true);
 
 // Throws std::runtime_error naming the file when it cannot be read or is not a checkpoint.
 Checkpoint load_checkpoint(const std::string& path);

@@ -31,7 +31,7 @@ std::vector<int> Problem::signature(const Vector& /*x*/, double /*p*/) {
   return {};
 }
 
-int Problem::jacobian_sign() const {
+int Problem::jacobian_sign() {
   return 0;
 }
 

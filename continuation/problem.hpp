@@ -49,7 +49,7 @@ class Problem {
 
   // Sign of det(dF/dx) from the last factorize() (+1/-1), 0 = unknown (the default). Used only
   // by the optional bifurcation indicator.
-  virtual int jacobian_sign() const;
+  virtual int jacobian_sign();
 
   // Called after each accepted point. The problem may change its size (e.g. grow a contact
   // candidate set) and map x to the new size in place; return true if it did (the library then

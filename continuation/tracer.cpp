@@ -52,6 +52,9 @@ class Tracer {
       throw std::invalid_argument("continuation: the checkpoint's x has size " +
                                   std::to_string(checkpoint.state.current.point.x.size()) +
                                   " but the problem has size " + std::to_string(problem_.size()));
+    if (checkpoint.branch.monitor_names != branch_.monitor_names)
+      throw std::invalid_argument(
+          "continuation: the checkpoint's monitors differ from the problem's");
     branch_ = checkpoint.branch;
     state_ = checkpoint.state;
     const Status s = branch_.status;
@@ -96,6 +99,10 @@ class Tracer {
       }
       const double nominal = state_.step;
       const double ds = std::min(nominal, stepper_.distance_to_target(state_));
+      if (!(ds > 0.0)) {  // natural, started on the bound ahead
+        finish(Status::kReachedBound, "p is on the bound " + fmt(state_.current.point.p));
+        return;
+      }
       StepResult step;
       TangentPoint b;
       std::string why;
@@ -203,8 +210,7 @@ class Tracer {
   bool after_accept() {
     if (!adapt()) return false;
     const int n = steps();
-    if (settings_.checkpoint_interval > 0 && n % settings_.checkpoint_interval == 0)
-      save_checkpoint(settings_.checkpoint_path, {stepper_.method(), branch_, state_});
+    if (settings_.checkpoint_interval > 0 && n % settings_.checkpoint_interval == 0) save_state();
     if (callback_ && !callback_(branch_.points.back(), branch_))
       return finish(Status::kStoppedByCallback, "stopped by the callback");
     return true;
@@ -231,9 +237,13 @@ class Tracer {
   bool finish(Status status, const std::string& reason) {
     branch_.status = status;
     branch_.reason = reason;
-    if (!settings_.checkpoint_path.empty() && status != Status::kStartFailed)
-      save_checkpoint(settings_.checkpoint_path, {stepper_.method(), branch_, state_});
+    if (!settings_.checkpoint_path.empty() && status != Status::kStartFailed) save_state();
     return false;
+  }
+
+  void save_state() const {
+    save_checkpoint(settings_.checkpoint_path, {stepper_.method(), branch_, state_},
+                    settings_.checkpoint_keeps_x);
   }
 
   Problem& problem_;

@@ -1,7 +1,8 @@
 // The 1-D Bratu problem u'' + lambda e^u = 0 on (0, 1), u(0) = u(1) = 0, by second-order
 // central differences on n interior nodes (h = 1/(n+1)), parameter p = lambda. The tridiagonal
-// Jacobian is factored by the Thomas algorithm (no pivoting: the matrix is an M-matrix-like
-// perturbation of the Laplacian on the branch traced here; a zero pivot reports failure).
+// Jacobian is factored by the Thomas algorithm without pivoting (J is indefinite past the fold,
+// but its pivots stay nonzero away from it; a zero pivot reports failure). The sign of det J is
+// the product of the pivots' signs.
 // Inner product: the discrete L2 product h a.b, so that arclength does not grow with n.
 #pragma once
 
@@ -55,7 +56,7 @@ class BratuProblem final : public Problem {
     return b.allFinite();
   }
 
-  int jacobian_sign() const override { return sign_; }
+  int jacobian_sign() override { return sign_; }
 
   double inner(const Vector& a, const Vector& b) const override { return h_ * a.dot(b); }
 
@@ -76,7 +77,8 @@ class BratuProblem final : public Problem {
 // so lambda = 8 y^2 / cosh^2(y), y = theta/4, whose maximum satisfies y tanh(y) = 1, giving
 // lambda_c = 8 (y^2 - 1) (cosh^2 y = y^2 / (y^2 - 1) there). Published: lambda_c = 3.513830719
 // (Boyd 1986, "An analytical and numerical study of the two-dimensional Bratu equation",
-// J. Sci. Comput. 1; Mohsen 2014, Comput. Math. Appl. 68).
+// J. Sci. Comput. 1; Mohsen 2014, "A simple solution of the Bratu problem", Comput. Math. Appl. 67,
+// 26-33).
 inline double bratu_critical_lambda() {
   double y = 1.2;
   for (int it = 0; it < 50; ++it) {  // Newton on y tanh y - 1 = 0

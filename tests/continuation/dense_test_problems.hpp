@@ -31,7 +31,7 @@ class DenseProblem : public Problem {
     b = lu_.solve(b);
     return b.allFinite();
   }
-  int jacobian_sign() const override { return sign_; }
+  int jacobian_sign() override { return sign_; }
   int factorizations() const { return factorizations_; }
 
  private:

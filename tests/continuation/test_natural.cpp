@@ -54,6 +54,15 @@ TEST(ContNatural, DirectionMinusOneStopsAtLowerBound) {
     EXPECT_LT(branch.points[i].p, branch.points[i - 1].p);
 }
 
+TEST(ContNatural, StartOnTheBoundAheadEndsAtOnce) {
+  test::CubicBranchProblem problem;
+  Settings settings = natural_settings();
+  settings.p_max = 0.5;
+  const Branch branch = natural(problem, Vector::Constant(1, 0.0), 0.5, settings);
+  EXPECT_EQ(branch.status, Status::kReachedBound);
+  EXPECT_EQ(branch.points.size(), 1u);
+}
+
 TEST(ContNatural, ParameterValueBehindStartRejected) {
   test::CubicBranchProblem problem;
   Settings settings = natural_settings();
