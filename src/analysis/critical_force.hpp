@@ -6,8 +6,10 @@
 // many contact changes; locating each by bisection costs dozens of corrector solves and reports
 // noise. Here the second derivative is the three-point divided difference on the path's points,
 // and an inflection is reported only where its sign changes and then stays changed for
-// `persistence` consecutive points on each side. The depth and force are interpolated linearly
-// between the two points that bracket the change; the accuracy is the bracket's depth width.
+// `persistence` consecutive points on each side (3 by default: on the paper cap a persistence of 2
+// still reported contact-change wiggles of T_N against k11 as inflections). The depth and force are
+// interpolated linearly between the two points that bracket the change; the accuracy is the
+// bracket's depth width.
 #pragma once
 
 #include <string>
@@ -19,6 +21,6 @@ namespace si {
 
 // curvature: 0 = k11, 1 = k12 + k21, 2 = k22 (IndentationState::apex_curvature).
 std::vector<cont::Event> critical_force_events(const std::vector<PathPoint>& points, int curvature,
-                                               int persistence = 2);
+                                               int persistence = 3);
 
 }  // namespace si

@@ -86,6 +86,8 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
   tributary_area_.assign(nn, 0.0);
   neighbours_.assign(nn, {});
   for (int e = 0; e < mesh.num_elements(); ++e) {
+    for (int n : mesh.elements[e])
+      if (n == model.apex_node()) apex_elements_.push_back(e);
     const double a = element_area(mesh, e) / 4;
     for (int i = 0; i < 4; ++i) {
       const int n = mesh.elements[e][i];
@@ -213,14 +215,19 @@ NodeGap IndentationProblem::gap(int i, const std::vector<NodeState>& s, double h
 
 // r_free = r(x) - sum lambda_i G_i on the free dofs; the assembly (and its tangent if asked)
 // is left in assembly_ (nonlinear kinematics).
-void IndentationProblem::shell_terms(const cont::Vector& z, double h, bool tangent,
-                                     cont::Vector& r_free) {
+void IndentationProblem::shell_terms(const cont::Vector& z, double h, cont::Vector& r_free) {
   const int nf = chart_.size();
   chart_.states(z.head(nf), 1.0, scratch_states_);
   if (model_.kinematics == Kinematics::kLinear) {
     r_free = linear_tangent_ * z.head(nf);
   } else {
-    assembler_.assemble(scratch_states_, ElementRequest{true, tangent}, assembly_);
+    // The tangent is assembled with every residual: KINSOL asks for the Jacobian at the point
+    // of its last residual, and one force+tangent assembly costs less than two.
+    if (assembled_x_.size() != nf || assembled_x_ != z.head(nf)) {
+      assembled_x_.resize(0);  // invalid while assembling (an element may throw)
+      assembler_.assemble(scratch_states_, ElementRequest{true, true}, assembly_);
+      assembled_x_ = z.head(nf);
+    }
     r_free = dofs_.restrict_to_free(assembly_.internal_force);
   }
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
@@ -230,7 +237,6 @@ void IndentationProblem::shell_terms(const cont::Vector& z, double h, bool tange
     for (int l = 0; l < 5; ++l)
       if (slots_[i].eq[l] >= 0) r_free[slots_[i].eq[l]] -= lambda * g.gradient[l];
   }
-  (void)h;
 }
 
 bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector& F) {
@@ -238,7 +244,7 @@ bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector&
   const int nf = chart_.size();
   cont::Vector r;
   try {
-    shell_terms(z, h, false, r);
+    shell_terms(z, h, r);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
@@ -258,7 +264,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   const int nf = chart_.size();
   cont::Vector r_free;
   try {
-    shell_terms(z, h, true, r_free);
+    shell_terms(z, h, r_free);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
@@ -425,8 +431,9 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
 
   const int apex = model_.apex_node();
   out.apex_deflection = s[apex].u.dot(direction_);
-  const Eigen::MatrixXd strains = nodal_strains(mesh, assembler_, *model_.element, s);
-  out.apex_curvature = strains.row(apex).segment<3>(3).transpose();
+  out.apex_curvature = nodal_strain_at(mesh, assembler_, *model_.element, s, apex, apex_elements_)
+                           .segment<3>(3)
+                           .transpose();
 
   const double lambda_max = z.tail(candidates_.size()).cwiseAbs().maxCoeff();
   const Vector3d axis_point = mesh.nodes[apex];

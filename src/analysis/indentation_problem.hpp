@@ -123,7 +123,7 @@ class IndentationProblem : public cont::Problem {
   void choose_candidates(const std::vector<int>& nodes);
   void build_pattern();
   NodeGap gap(int i, const std::vector<NodeState>& s, double h, bool derivative) const;
-  void shell_terms(const cont::Vector& z, double h, bool tangent, cont::Vector& r_free);
+  void shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
 
   const ShellModel& model_;
   const Indenter& indenter_;
@@ -141,12 +141,16 @@ class IndentationProblem : public cont::Problem {
   std::vector<double> tributary_area_;         // per mesh node, mm^2
   mutable std::vector<double> touch_guess_;    // per candidate: last s(p), a Newton guess
   std::vector<std::vector<int>> neighbours_;   // per mesh node
+  std::vector<int> apex_elements_;             // elements that contain the apex node
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
   std::vector<CandidateSlots> slots_;
   std::unique_ptr<LinearSolver> solver_;
   bool analyzed_ = false;
   std::vector<NodeState> scratch_states_;
+  // Nonlinear kinematics: the shell coordinates of the last assembly (force and tangent); a
+  // factorize() at the point of the last residual() (KINSOL's pattern) reuses it.
+  cont::Vector assembled_x_;
   IndentationCounters counters_;
   // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.
   cont::Vector cached_z_;

@@ -21,6 +21,25 @@ Eigen::MatrixXd nodal_strains(const Mesh& mesh, const Assembler& assembler,
   return sum;
 }
 
+Eigen::Matrix<double, 1, 8> nodal_strain_at(const Mesh& mesh, const Assembler& assembler,
+                                            const ShellElement& element,
+                                            const std::vector<NodeState>& state, int node,
+                                            const std::vector<int>& elements) {
+  Eigen::Matrix<double, 1, 8> sum = Eigen::Matrix<double, 1, 8>::Zero();
+  int count = 0;
+  for (int e : elements) {
+    const ElementStrains s = element.strains_at_nodes(
+        assembler.geometry(e), assembler.element_states(state, e), assembler.kinematics());
+    for (int a = 0; a < 4; ++a)
+      if (mesh.elements[e][a] == node) {
+        sum.head<6>() += s.R[a].transpose();
+        sum.tail<2>() += s.gamma[a].transpose();
+        ++count;
+      }
+  }
+  return count > 0 ? Eigen::Matrix<double, 1, 8>(sum / count) : sum;
+}
+
 Eigen::MatrixXd nodal_resultants(const Eigen::MatrixXd& strains, const ShellLaw& law) {
   Eigen::MatrixXd out(strains.rows(), 8);
   out.leftCols<6>() = strains.leftCols<6>() * law.A_R.transpose();

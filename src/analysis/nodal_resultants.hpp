@@ -24,6 +24,13 @@ namespace si {
 Eigen::MatrixXd nodal_strains(const Mesh& mesh, const Assembler& assembler,
                               const ShellElement& element, const std::vector<NodeState>& state);
 
+// The same average at one node over `elements`, the elements that contain it (cheaper when only
+// a few nodes are wanted, e.g. the apex curvature along a path).
+Eigen::Matrix<double, 1, 8> nodal_strain_at(const Mesh& mesh, const Assembler& assembler,
+                                            const ShellElement& element,
+                                            const std::vector<NodeState>& state, int node,
+                                            const std::vector<int>& elements);
+
 // The resultants of nodal strains (one row per node, as above): N11, N12, N22 (N/mm),
 // M11, M12, M22 (N mm/mm), Q1, Q2 (N/mm), i.e. [A_R R; G gamma].
 Eigen::MatrixXd nodal_resultants(const Eigen::MatrixXd& strains, const ShellLaw& law);
