@@ -16,8 +16,9 @@
 namespace si {
 namespace {
 
-IndentationOptions options_of(const CaseFile& c, int threads) {
+IndentationOptions options_of(const CaseFile& c, int threads, const std::string& linear_solver) {
   IndentationOptions o;
+  o.linear_solver = linear_solver;
   o.contact_offset = contact_face_offset(c);
   // Every node the indenter can reach within the path's depth, plus a margin for the shell's
   // own motion towards it; adapt() grows the set if contact still spreads past it.
@@ -186,13 +187,13 @@ IndenterPose default_indenter_pose(const CaseFile& c, const ShellModel& model) {
   return pose;
 }
 
-IndentationSetup::IndentationSetup(CaseFile c, int threads)
+IndentationSetup::IndentationSetup(CaseFile c, int threads, const std::string& linear_solver)
     : case_file(std::move(c)), model(build_shell_model(case_file)) {
   pose = default_indenter_pose(case_file, model);
   try {
     indenter = make_indenter(case_file.indenter, pose);
     problem = std::make_unique<IndentationProblem>(model, *indenter, pose.direction,
-                                                   options_of(case_file, threads));
+                                                   options_of(case_file, threads, linear_solver));
   } catch (const Error& e) {
     const auto text = [](const Vector3d& v) {
       char buf[96];

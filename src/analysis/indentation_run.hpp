@@ -32,7 +32,8 @@ struct IndentationSetup {
   std::unique_ptr<IndentationProblem> problem;
 
   // Throws an input error naming the case file and key for a case that cannot run.
-  IndentationSetup(CaseFile c, int threads);
+  // linear_solver: the contact Jacobian's sparse LU, "umfpack" or "klu" (docs/performance.md).
+  IndentationSetup(CaseFile c, int threads, const std::string& linear_solver = "umfpack");
 };
 
 // The indenter's pose: the case's indenter.position/direction/axis; without a position, the
