@@ -246,6 +246,7 @@ struct PressureField {
   std::map<int, double> pressure;  // candidate node -> MPa
   double max_pressure = 0;
   int contact_nodes = 0;
+  IndentationState state;
 };
 
 PressureField pressure_at(IndentationFixture& f, double depth, int steps) {
@@ -257,6 +258,7 @@ PressureField pressure_at(IndentationFixture& f, double depth, int steps) {
   }
   const IndentationState s = p.evaluate(z, depth);
   PressureField out;
+  out.state = s;
   out.contact_nodes = s.contact_nodes;
   for (std::size_t i = 0; i < s.nodes.size(); ++i) {
     out.pressure[s.nodes[i]] = s.pressures[i];
@@ -356,6 +358,40 @@ TEST(ContactVerification, UnidirectionalCap_ContactPressureHasTheMirrorSymmetrie
   const std::map<std::string, double> a =
       check_symmetries(f, "[0]8 cap", {"mirror x", "mirror y", "rotation 180"});
   EXPECT_GT(a.at("diagonal"), 1e-3);
+}
+
+// The quarter model (symmetry_factor 4, symmetry planes as supports) reports the whole shell's
+// values: force, reaction, energy, contact area and radius, apex deflection and the pressures
+// equal those of the full model, whose mesh has the same nodes in the quarter (exact property;
+// tolerance 1e-10 relative: the two solves differ in size and ordering, round-off and the
+// 1e-12 Newton tolerance).
+TEST(ContactVerification, QuarterModelReportsTheWholeShell) {
+  const auto run = [](const std::string& symmetry) {
+    IndentationFixture f(
+        isotropic_indentation_case(3.8, kCapShell,
+                                   "{size_apex: 2 mm, size_edge: 4 mm, refine_radius: 10 mm, "
+                                   "symmetry: " +
+                                       symmetry + "}",
+                                   "nonlinear", 12.7, "outer"),
+        one_thread());
+    return pressure_at(f, 1.5, 3);
+  };
+  const PressureField full_field = run("full"), quarter_field = run("quarter");
+  const IndentationState& full = full_field.state;
+  const IndentationState& quarter = quarter_field.state;
+  std::cout << "quarter vs full cap: force " << quarter.force << " / " << full.force << ", energy "
+            << quarter.energy << " / " << full.energy << ", area " << quarter.contact_area << " / "
+            << full.contact_area << "\n";
+  const auto expect_same = [](double a, double b, const char* what) {
+    EXPECT_NEAR(a, b, 1e-10 * std::abs(b)) << what;
+  };
+  expect_same(quarter.force, full.force, "force");
+  expect_same(quarter.reaction, full.reaction, "reaction");
+  expect_same(quarter.energy, full.energy, "energy");
+  expect_same(quarter.contact_area, full.contact_area, "contact area");
+  expect_same(quarter.contact_radius, full.contact_radius, "contact radius");
+  expect_same(quarter.apex_deflection, full.apex_deflection, "apex deflection");
+  expect_same(quarter_field.max_pressure, full_field.max_pressure, "largest pressure");
 }
 
 // ---------------------------------------------------------------------------------------------
