@@ -1,12 +1,16 @@
 // Small indentation models shared by the analysis tests: coarse versions of the paper's cap.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "analysis/indentation_problem.hpp"
+#include "analysis/linear_indentation.hpp"
 #include "analysis/shell_model.hpp"
 #include "contact/indenter_factory.hpp"
+#include "continuation/kinsol_corrector.hpp"
 #include "io/case_file.hpp"
 
 namespace si::testing {
@@ -27,6 +31,36 @@ inline CaseFile coarse_cap_case(const std::string& kinematics, const std::string
       " mm, refine_radius: 10 mm, symmetry: " + symmetry + "}\n" + "kinematics: " + kinematics +
       "\n" + "indenter: {shape: sphere, radius: 12.7 mm}\n";
   return parse_case_file(yaml, "coarse_cap.yaml");
+}
+
+// One isotropic ply of thickness t (mm; E = 70 GPa, nu = 0.3 inline, the material of
+// point-loads.md 4.2) with the given shell and mesh (YAML flow maps), pressed by a rigid sphere of
+// radius `sphere_radius` (mm) on the face `surface` (outer | mid).
+constexpr double kIsotropicE = 70000.0;  // MPa
+constexpr double kIsotropicNu = 0.3;
+
+inline CaseFile isotropic_indentation_case(double t, const std::string& shell,
+                                           const std::string& mesh, const std::string& kinematics,
+                                           double sphere_radius, const std::string& surface) {
+  const std::string yaml = "material: {type: isotropic, E: " + std::to_string(kIsotropicE) +
+                           " MPa, nu: " + std::to_string(kIsotropicNu) + "}\n" +
+                           "laminate: {layup: \"[0]\", ply_thickness: " + std::to_string(t) +
+                           " mm}\n" + "shell: " + shell + "\nmesh: " + mesh +
+                           "\nkinematics: " + kinematics +
+                           "\nindenter: {shape: sphere, radius: " + std::to_string(sphere_radius) +
+                           " mm}\ncontact: {surface: " + surface + "}\n";
+  return parse_case_file(yaml, "isotropic_indentation.yaml");
+}
+
+// Settings of the full KINSOL solve at one depth, tight enough for the KKT checks (1e-8 of the
+// force scale): relative tolerance 1e-12 on residuals scaled by kappa (N per mm of gap).
+inline cont::NewtonSettings tight_kinsol_settings(const IndentationProblem& p) {
+  cont::NewtonSettings s;
+  s.relative_tolerance = 1e-12;
+  s.residual_scale = p.stiffness_scale();
+  s.max_iterations = 40;
+  s.max_step = 1e12;
+  return s;
 }
 
 // A model, its indenter (above the apex, moving along -z) and the problem, kept together.
