@@ -64,11 +64,13 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
     touch = indenter.first_touch(points);
   } catch (const Error&) {
     throw_input("the " + indenter.name() +
-                " indenter never touches the shell along its direction of travel");
+                    " indenter never touches the shell along its direction of travel",
+                Where{"", "indenter", indenter.name(), 0});
   }
   if (touch < 0)
     throw_input("the " + indenter.name() + " indenter starts inside the shell (it would have " +
-                "touched it " + std::to_string(-touch) + " mm before its start position)");
+                    "touched it " + std::to_string(-touch) + " mm before its start position)",
+                Where{"", "indenter", indenter.name(), 0});
 
   // Exact touch travels of the reachable nodes; t0 = the smallest.
   std::vector<int> reachable;

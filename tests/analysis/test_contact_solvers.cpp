@@ -14,14 +14,6 @@ namespace {
 using testing::coarse_cap_case;
 using testing::IndentationFixture;
 
-cont::NewtonSettings kinsol_settings(const IndentationProblem& p) {
-  cont::NewtonSettings s;
-  s.relative_tolerance = 1e-12;
-  s.residual_scale = p.stiffness_scale();  // N per mm of gap
-  s.max_iterations = 40;
-  return s;
-}
-
 struct Path {
   std::vector<cont::Vector> points;
   std::vector<IndentationState> states;
@@ -31,7 +23,7 @@ Path kinsol_path(IndentationProblem& p, const std::vector<double>& depths) {
   Path out;
   cont::Vector z = p.initial_point();
   for (double h : depths) {
-    const cont::NewtonResult r = cont::solve_at(p, z, h, kinsol_settings(p));
+    const cont::NewtonResult r = cont::solve_at(p, z, h, testing::tight_kinsol_settings(p));
     EXPECT_TRUE(r.converged) << "h = " << h << ": " << r.reason;
     out.points.push_back(z);
     out.states.push_back(p.evaluate(z, h));
@@ -102,7 +94,7 @@ TEST(ContactSolvers, LinearFastPathAgreesWithKinsol) {
   LinearIndentation fast(p);
   cont::Vector z = p.initial_point();
   for (double h : {0.2, 0.6, 1.0, 2.0, 1.3}) {  // also back down: the warm start must unload
-    const cont::NewtonResult r = cont::solve_at(p, z, h, kinsol_settings(p));
+    const cont::NewtonResult r = cont::solve_at(p, z, h, testing::tight_kinsol_settings(p));
     ASSERT_TRUE(r.converged) << r.reason;
     const cont::Vector zf = fast.solve(h);
     const int nf = p.num_shell_unknowns();
