@@ -88,8 +88,12 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
   tributary_area_.assign(nn, 0.0);
   neighbours_.assign(nn, {});
   for (int e = 0; e < mesh.num_elements(); ++e) {
-    for (int n : mesh.elements[e])
+    bool supported = false;
+    for (int n : mesh.elements[e]) {
       if (n == model.apex_node()) apex_elements_.push_back(e);
+      for (int l = 0; l < 3; ++l) supported = supported || dofs_.is_prescribed(DofMap::dof(n, l));
+    }
+    if (supported) support_elements_.push_back(e);
     const double a = element_area(mesh, e) / 4;
     for (int i = 0; i < 4; ++i) {
       const int n = mesh.elements[e][i];
@@ -115,7 +119,10 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
     }
   kappa_ = direction_.dot(Ka * direction_);
   SI_REQUIRE(kappa_ > 0, "indentation: the apex has no stiffness along the direction of travel");
-  if (model.kinematics == Kinematics::kLinear) linear_tangent_ = assembly_.tangent;
+  if (model.kinematics == Kinematics::kLinear) {
+    linear_tangent_ = assembly_.tangent;
+    build_reaction_row();
+  }
 
   choose_candidates(reachable);
 }
@@ -412,6 +419,28 @@ Eigen::VectorXd IndentationProblem::reference_gaps() const {
   return g0;
 }
 
+// Linear kinematics: the support reaction along e is linear in x, r_e . x with
+// r_e = sum over prescribed translations p of e_l(p) K(p, free); built once from the elements
+// that touch a support, so a linear path need not assemble anything per point.
+void IndentationProblem::build_reaction_row() {
+  const std::vector<NodeState> s = reference_state(model_.mesh);
+  reaction_row_ = Eigen::VectorXd::Zero(chart_.size());
+  ElementResponse response;
+  for (int e : support_elements_) {
+    model_.element->compute(assembler_.geometry(e), assembler_.element_states(s, e), model_.law,
+                            model_.kinematics, ElementRequest{false, true}, response);
+    const ElementDofs dofs = DofMap::element_dofs(model_.mesh.elements[e]);
+    for (int r = 0; r < kShellElementDofs; ++r) {
+      const int local = r % kShellNodeDofs;
+      if (local >= 3 || !dofs_.is_prescribed(dofs[r])) continue;
+      for (int c = 0; c < kShellElementDofs; ++c) {
+        const int eq = dofs_.equation(dofs[c]);
+        if (eq >= 0) reaction_row_[eq] += direction_[local] * response.tangent(r, c);
+      }
+    }
+  }
+}
+
 IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   if (cached_state_ && h == cached_h_ && z.size() == cached_z_.size() && z == cached_z_)
     return *cached_state_;
@@ -422,14 +451,22 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   IndentationState out;
   out.depth = h;
   const std::vector<NodeState> s = node_states(z);
-  Assembly a = assembler_.make_assembly();
-  assembler_.assemble(s, ElementRequest{true, false}, a);
-  out.energy = sym * a.energy;
-  const Eigen::VectorXd reaction =
-      reactions(dofs_, a.internal_force, Eigen::VectorXd::Zero(dofs_.num_dofs()));
-  Vector3d total = Vector3d::Zero();
-  for (int n = 0; n < mesh.num_nodes(); ++n) total += reaction.segment<3>(kShellNodeDofs * n);
-  out.reaction = -sym * total.dot(direction_);
+  Vector3d total = Vector3d::Zero();  // sum of the support reactions (internal force there)
+  if (model_.kinematics == Kinematics::kLinear) {
+    const cont::Vector x = z.head(nf);
+    out.energy = sym * 0.5 * x.dot(linear_tangent_ * x);
+    out.reaction = -sym * reaction_row_.dot(x);
+  } else {
+    // Converged points are where the last residual was assembled: reuse it.
+    if (assembled_x_.size() != nf || assembled_x_ != z.head(nf)) {
+      assembled_x_.resize(0);  // the tangent in assembly_ is stale from here on
+      assembler_.assemble(s, ElementRequest{true, false}, assembly_);
+    }
+    out.energy = sym * assembly_.energy;
+    for (int dof : dofs_.prescribed_dofs())
+      if (dof % kShellNodeDofs < 3) total[dof % kShellNodeDofs] += assembly_.internal_force[dof];
+    out.reaction = -sym * total.dot(direction_);
+  }
 
   const int apex = model_.apex_node();
   out.apex_deflection = s[apex].u.dot(direction_);

@@ -124,6 +124,7 @@ class IndentationProblem : public cont::Problem {
   void build_pattern();
   NodeGap gap(int i, const std::vector<NodeState>& s, double h, bool derivative) const;
   void shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
+  void build_reaction_row();
 
   const ShellModel& model_;
   const Indenter& indenter_;
@@ -133,15 +134,17 @@ class IndentationProblem : public cont::Problem {
   Assembler assembler_;
   Assembly assembly_;
   ShellChart chart_;
-  SparseMatrix linear_tangent_;  // linear kinematics: K at the reference state
-  double t0_ = 0;                // first touch travel
-  double kappa_ = 1;             // N/mm
+  SparseMatrix linear_tangent_;   // linear kinematics: K at the reference state
+  Eigen::VectorXd reaction_row_;  // linear kinematics: support reaction along e = r_e . x
+  double t0_ = 0;                 // first touch travel
+  double kappa_ = 1;              // N/mm
   std::vector<int> candidates_;
   std::vector<NodeContactGeometry> geometry_;  // per mesh node
   std::vector<double> tributary_area_;         // per mesh node, mm^2
   mutable std::vector<double> touch_guess_;    // per candidate: last s(p), a Newton guess
   std::vector<std::vector<int>> neighbours_;   // per mesh node
   std::vector<int> apex_elements_;             // elements that contain the apex node
+  std::vector<int> support_elements_;          // elements with a prescribed translation
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
   std::vector<CandidateSlots> slots_;

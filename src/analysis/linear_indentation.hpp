@@ -4,8 +4,9 @@
 //     lambda >= 0,   w = g0 - h + S lambda >= 0,   lambda . w = 0,   S = C K^-1 C^T,
 // an LCP with S symmetric positive definite, i.e. the convex QP
 //     min 1/2 lambda^T S lambda + (g0 - h)^T lambda   subject to lambda >= 0.
-// It is solved by the primal active-set method (Nocedal & Wright 2006, Alg. 16.3), warm-started
-// from the previous depth's contact set, which terminates finitely; then x = K^-1 C^T lambda.
+// It is solved by the primal-dual active-set method warm-started from the previous depth (all
+// contact changes at once, a few dense solves), with the primal active-set method (Nocedal &
+// Wright 2006, Alg. 16.3), which terminates finitely, as the fall-back; then x = K^-1 C^T lambda.
 // S costs one solve per candidate, once; each depth costs a few small dense Cholesky solves and
 // one sparse back-substitution.
 #pragma once
@@ -24,9 +25,11 @@ class LinearIndentation {
 
   // The problem's unknowns z = [x ; lambda] at depth h.
   cont::Vector solve(double h);
-  int last_iterations() const { return iterations_; }  // active-set changes at the last depth
+  int last_iterations() const { return iterations_; }  // dense solves at the last depth
 
  private:
+  bool solve_pdas(const Eigen::VectorXd& q, double tol, Eigen::VectorXd& lambda);
+  void solve_primal(const Eigen::VectorXd& q, double tol, Eigen::VectorXd& lambda);
   const IndentationProblem& problem_;
   std::unique_ptr<LinearSolver> solver_;
   SparseMatrix C_;

@@ -10,6 +10,7 @@
 #include "app/run_command.hpp"
 #include "app/section_command.hpp"
 #include "app/static_command.hpp"
+#include "core/blas_threads.hpp"
 #include "core/error.hpp"
 
 namespace {
@@ -175,6 +176,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  si::limit_blas_threads();
   try {
     return run(argc, argv);
   } catch (const si::Error& e) {
