@@ -7,14 +7,6 @@ namespace {
 
 const char* kCurvatureNames[] = {"k11_per_mm", "k12_per_mm", "k22_per_mm"};
 
-// Monitor vector of a state in the problem's monitor order (indentation_problem.hpp).
-cont::Vector monitors_of(const IndentationState& s) {
-  cont::Vector m(7);
-  m << s.force, s.apex_deflection, s.contact_radius, s.energy, s.apex_curvature[0],
-      s.apex_curvature[1], s.apex_curvature[2];
-  return m;
-}
-
 }  // namespace
 
 std::vector<cont::Event> critical_force_events(const std::vector<PathPoint>& points, int curvature,
@@ -52,7 +44,8 @@ std::vector<cont::Event> critical_force_events(const std::vector<PathPoint>& poi
     e.monitor = "force_N";
     e.against = kCurvatureNames[curvature];
     e.p = 0.5 * (a.depth + b.depth);
-    e.monitors = 0.5 * (monitors_of(a) + monitors_of(b));
+    e.monitors =
+        0.5 * (IndentationProblem::monitor_vector(a) + IndentationProblem::monitor_vector(b));
     e.step = i2;
     e.located = false;
     e.accuracy = std::abs(b.depth - a.depth);

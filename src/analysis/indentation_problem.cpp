@@ -347,16 +347,25 @@ double IndentationProblem::inner(const cont::Vector& a, const cont::Vector& b) c
 }
 
 std::vector<std::string> IndentationProblem::monitor_names() const {
-  return {"force_N",    "apex_w_mm",  "contact_radius_mm", "energy_Nmm",
-          "k11_per_mm", "k12_per_mm", "k22_per_mm"};
+  return {"force_N", "apex_w_mm", "contact_radius_mm", "k11_per_mm", "k12_per_mm", "k22_per_mm"};
 }
 
-cont::Vector IndentationProblem::monitors(const cont::Vector& z, double h) {
-  const IndentationState s = evaluate(z, h);
-  cont::Vector m(7);
-  m << s.force, s.apex_deflection, s.contact_radius, s.energy, s.apex_curvature[0],
-      s.apex_curvature[1], s.apex_curvature[2];
+cont::Vector IndentationProblem::monitor_vector(const IndentationState& s) {
+  cont::Vector m(6);
+  m << s.force, s.apex_deflection, s.contact_radius, s.apex_curvature[0], s.apex_curvature[1],
+      s.apex_curvature[2];
   return m;
+}
+
+// The monitors need no assembly (the continuation evaluates them off the branch too): the
+// force, apex deflection, contact radius and apex curvatures only.
+cont::Vector IndentationProblem::monitors(const cont::Vector& z, double h) {
+  if (cached_state_ && h == cached_h_ && z.size() == cached_z_.size() && z == cached_z_)
+    return monitor_vector(*cached_state_);
+  IndentationState out;
+  const std::vector<NodeState> s = node_states(z);
+  kinematic_quantities(z, s, out);
+  return monitor_vector(out);
 }
 
 std::vector<int> IndentationProblem::signature(const cont::Vector& z, double h) {
@@ -441,11 +450,40 @@ void IndentationProblem::build_reaction_row() {
   }
 }
 
+// Force, contact nodes, area and radius, apex deflection and curvatures: no assembly, no gaps.
+void IndentationProblem::kinematic_quantities(const cont::Vector& z,
+                                              const std::vector<NodeState>& s,
+                                              IndentationState& out) const {
+  const Mesh& mesh = model_.mesh;
+  const int nf = chart_.size();
+  const double sym = model_.symmetry_factor;
+  const int apex = model_.apex_node();
+  out.apex_deflection = s[apex].u.dot(direction_);
+  out.apex_curvature = nodal_strain_at(mesh, assembler_, *model_.element, s, apex, apex_elements_)
+                           .segment<3>(3)
+                           .transpose();
+  const double lambda_max = z.tail(candidates_.size()).cwiseAbs().maxCoeff();
+  const Vector3d axis_point = mesh.nodes[apex];
+  out.force = 0;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const int n = candidates_[i];
+    const double lambda = z[nf + static_cast<int>(i)];
+    out.force += lambda;
+    if (lambda > 1e-9 * lambda_max && lambda > 0) {
+      ++out.contact_nodes;
+      out.contact_area += sym * tributary_area_[n];
+      const Vector3d p = mesh.nodes[n] + s[n].u - axis_point;
+      out.contact_radius =
+          std::max(out.contact_radius, (p - p.dot(direction_) * direction_).norm());
+    }
+  }
+  out.force *= sym;
+}
+
 IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   if (cached_state_ && h == cached_h_ && z.size() == cached_z_.size() && z == cached_z_)
     return *cached_state_;
   ++counters_.evaluations;
-  const Mesh& mesh = model_.mesh;
   const int nf = chart_.size();
   const double sym = model_.symmetry_factor;
   IndentationState out;
@@ -468,14 +506,7 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
     out.reaction = -sym * total.dot(direction_);
   }
 
-  const int apex = model_.apex_node();
-  out.apex_deflection = s[apex].u.dot(direction_);
-  out.apex_curvature = nodal_strain_at(mesh, assembler_, *model_.element, s, apex, apex_elements_)
-                           .segment<3>(3)
-                           .transpose();
-
-  const double lambda_max = z.tail(candidates_.size()).cwiseAbs().maxCoeff();
-  const Vector3d axis_point = mesh.nodes[apex];
+  kinematic_quantities(z, s, out);
   out.min_gap = std::numeric_limits<double>::infinity();
   out.min_multiplier = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
@@ -486,21 +517,12 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
     out.multipliers.push_back(lambda);
     out.gaps.push_back(g.hits ? g.gap : std::numeric_limits<double>::infinity());
     out.pressures.push_back(lambda / tributary_area_[n]);
-    out.force += lambda;
     out.min_multiplier = std::min(out.min_multiplier, lambda);
     if (g.hits) {
       out.min_gap = std::min(out.min_gap, g.gap);
       out.max_complementarity = std::max(out.max_complementarity, std::abs(lambda * g.gap));
     }
-    if (lambda > 1e-9 * lambda_max && lambda > 0) {
-      ++out.contact_nodes;
-      out.contact_area += sym * tributary_area_[n];
-      const Vector3d p = mesh.nodes[n] + s[n].u - axis_point;
-      out.contact_radius =
-          std::max(out.contact_radius, (p - p.dot(direction_) * direction_).norm());
-    }
   }
-  out.force *= sym;
   cached_z_ = z;
   cached_h_ = h;
   cached_state_ = std::make_unique<IndentationState>(out);

@@ -91,6 +91,8 @@ class IndentationProblem : public cont::Problem {
   // depth step (each shell point moves at most as much as the indenter).
   double inner(const cont::Vector& a, const cont::Vector& b) const override;
   std::vector<std::string> monitor_names() const override;
+  // The monitors of a state, in monitor_names() order.
+  static cont::Vector monitor_vector(const IndentationState& s);
   cont::Vector monitors(const cont::Vector& z, double h) override;
   std::vector<int> signature(const cont::Vector& z, double h) override;
   bool adapt(cont::Vector& z, double h) override;
@@ -125,6 +127,8 @@ class IndentationProblem : public cont::Problem {
   NodeGap gap(int i, const std::vector<NodeState>& s, double h, bool derivative) const;
   void shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
   void build_reaction_row();
+  void kinematic_quantities(const cont::Vector& z, const std::vector<NodeState>& s,
+                            IndentationState& out) const;
 
   const ShellModel& model_;
   const Indenter& indenter_;
