@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# The main job: set up (install + build), then run shellindent on its built-in default.
-# Until the shell solver lands this is the section analysis of the source paper's lay-ups
-# ([theta/-theta]2S, theta = 0..90 by 15, and [0/90]2S): a table on stdout, JSON/CSV and a
-# PNG figure in results/.
+# The main job: set up (install + build), then run shellindent on its built-in default, the
+# source paper's cap: a clamped carbon/epoxy spherical cap ([0/0]2S, base radius 25 mm,
+# R = 80.9 mm, t = 3.8 mm) indented by a rigid 12.7 mm sphere from 0 to 10 mm, geometrically
+# nonlinear, by pseudo-arclength continuation in the depth. Prints the force-depth table,
+# writes results/paper_cap/ (path.csv, path.json, events.json, VTU files for ParaView) and the
+# figure results/paper_cap/force_depth.png. About two minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh build
 OUT="${1:-results}"
-build/shellindent section --paper --out "$OUT"
-/usr/bin/python3 studies/plot_paper_sections.py "$OUT/paper_sections.csv" "$OUT/paper_sections.png"
+build/shellindent run --out "$OUT/paper_cap"
+/usr/bin/python3 studies/plot_path.py "$OUT/paper_cap" "$OUT/paper_cap/force_depth.png"
