@@ -135,6 +135,12 @@ void IndentationProblem::choose_candidates(const std::vector<int>& nodes) {
   build_pattern();
 }
 
+void IndentationProblem::restore_candidates(const std::vector<int>& nodes) {
+  for (int n : nodes)
+    SI_REQUIRE(n >= 0 && n < model_.mesh.num_nodes(), "restore_candidates: node out of range");
+  choose_candidates(nodes);
+}
+
 void IndentationProblem::build_pattern() {
   const int nf = chart_.size(), nc = static_cast<int>(candidates_.size());
   const SparseMatrix& K = assembly_.tangent;

@@ -102,6 +102,8 @@ class IndentationProblem : public cont::Problem {
   double first_touch() const { return t0_; }
   double stiffness_scale() const { return kappa_; }
   const std::vector<int>& candidates() const { return candidates_; }
+  // Replaces the candidate set (resuming a run whose set had grown): mesh node indices.
+  void restore_candidates(const std::vector<int>& nodes);
   int num_shell_unknowns() const { return chart_.size(); }
   // The whole-shell force scale for tolerances: max(T_N, kappa * 1 mm * 1e-3) at z.
   double force_scale(const cont::Vector& z) const;

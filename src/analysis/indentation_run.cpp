@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "analysis/active_set_solver.hpp"
 #include "analysis/critical_force.hpp"
 #include "analysis/linear_indentation.hpp"
 #include "contact/indenter_factory.hpp"
+#include "continuation/checkpoint.hpp"
 #include "continuation/kinsol_corrector.hpp"
 #include "continuation/natural.hpp"
 #include "continuation/pseudo_arclength.hpp"
@@ -37,6 +41,7 @@ class PathRecorder {
   bool add(IndentationProblem& problem, const cont::Vector& z, double h, int iterations,
            double step) {
     PathPoint p;
+    p.index = static_cast<int>(result_.points.size());
     p.state = problem.evaluate(z, h);
     p.iterations = iterations;
     p.step = step;
@@ -155,19 +160,107 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   return c;
 }
 
-PathResult run_continuation(IndentationSetup& s, const PathCallback& callback) {
+// The run's own part of a checkpoint, beside the library's: the candidate set (append-only, so
+// a checkpoint's size tells how much of it applies) and the points written so far.
+nlohmann::json point_json(const PathPoint& p) {
+  const IndentationState& s = p.state;
+  return {s.depth,
+          s.force,
+          s.reaction,
+          s.apex_deflection,
+          s.contact_radius,
+          s.contact_area,
+          s.contact_nodes,
+          s.apex_curvature[0],
+          s.apex_curvature[1],
+          s.apex_curvature[2],
+          s.energy,
+          p.work,
+          s.min_gap,
+          s.min_multiplier,
+          s.max_complementarity,
+          p.iterations,
+          p.step};
+}
+
+PathPoint point_of(const nlohmann::json& j) {
+  PathPoint p;
+  IndentationState& s = p.state;
+  s.depth = j[0], s.force = j[1], s.reaction = j[2], s.apex_deflection = j[3];
+  s.contact_radius = j[4], s.contact_area = j[5], s.contact_nodes = j[6];
+  s.apex_curvature = Vector3d(j[7], j[8], j[9]);
+  s.energy = j[10], p.work = j[11], s.min_gap = j[12], s.min_multiplier = j[13];
+  s.max_complementarity = j[14], p.iterations = j[15], p.step = j[16];
+  return p;
+}
+
+std::string sidecar_path(const std::string& checkpoint) {
+  return checkpoint + ".path.json";
+}
+
+void write_sidecar(const std::string& checkpoint, const IndentationProblem& problem,
+                   const PathResult& r) {
+  nlohmann::json points = nlohmann::json::array();
+  for (const PathPoint& p : r.points) points.push_back(point_json(p));
+  const nlohmann::json j = {{"candidates", problem.candidates()}, {"points", points}};
+  const std::string tmp = sidecar_path(checkpoint) + ".tmp";
+  std::ofstream(tmp) << j.dump() << "\n";
+  std::filesystem::rename(tmp, sidecar_path(checkpoint));
+}
+
+// Restores the candidate set and the points of a checkpointed run; returns the checkpoint.
+cont::Checkpoint restore(const std::string& checkpoint, IndentationProblem& problem,
+                         PathResult& r) {
+  cont::Checkpoint c;
+  nlohmann::json side;
+  try {
+    c = cont::load_checkpoint(checkpoint);
+    std::ifstream in(sidecar_path(checkpoint));
+    side = nlohmann::json::parse(in);
+  } catch (const std::exception& e) {
+    throw_input(std::string("cannot resume: ") + e.what(), Where{checkpoint, "", "", 0});
+  }
+  const std::size_t nc = c.state.current.point.x.size() - problem.num_shell_unknowns();
+  std::vector<int> candidates = side["candidates"].get<std::vector<int>>();
+  if (nc > candidates.size())
+    throw_input("cannot resume: the checkpoint does not belong to this case",
+                Where{checkpoint, "", "", 0});
+  candidates.resize(nc);
+  problem.restore_candidates(candidates);
+  const std::size_t kept = std::min(c.branch.points.size(), side["points"].size());
+  for (std::size_t i = 0; i < kept; ++i) {
+    r.points.push_back(point_of(side["points"][i]));
+    r.points.back().index = static_cast<int>(i);
+  }
+  return c;
+}
+
+PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
+                            const PathControl& control) {
   PathResult r;
-  const cont::Settings settings = continuation_settings(s);
+  cont::Settings settings = continuation_settings(s);
   r.method = cont::method_name(settings.method);
   r.monitor_names = s.problem->monitor_names();
+  settings.checkpoint_path = control.checkpoint;
+  settings.checkpoint_interval = control.checkpoint.empty() ? 0 : control.checkpoint_interval;
+  settings.checkpoint_keeps_x = false;  // the points live in the sidecar
   PathRecorder rec(r, callback);
   const cont::Callback on_point = [&](const cont::Point& pt, const cont::Branch&) {
-    return rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step);
+    const bool go_on = rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step);
+    if (!control.checkpoint.empty()) write_sidecar(control.checkpoint, *s.problem, r);
+    return go_on;
   };
-  const cont::Branch b =
-      settings.method == cont::Method::kNatural
-          ? cont::natural(*s.problem, s.problem->initial_point(), 0.0, settings, on_point)
-          : cont::pseudo_arclength(*s.problem, s.problem->initial_point(), 0.0, settings, on_point);
+  const bool natural = settings.method == cont::Method::kNatural;
+  cont::Branch b;
+  if (control.resume) {
+    const cont::Checkpoint c = restore(control.checkpoint, *s.problem, r);
+    b = natural ? cont::natural(*s.problem, c, settings, on_point)
+                : cont::pseudo_arclength(*s.problem, c, settings, on_point);
+  } else {
+    b = natural ? cont::natural(*s.problem, s.problem->initial_point(), 0.0, settings, on_point)
+                : cont::pseudo_arclength(*s.problem, s.problem->initial_point(), 0.0, settings,
+                                         on_point);
+  }
   r.events = b.events;
   const bool ok = b.status == cont::Status::kCompleted || b.status == cont::Status::kReachedBound;
   finish(r, ok, cont::status_name(b.status), b.reason);
@@ -223,11 +316,12 @@ std::vector<double> depth_grid(const PathSpec& path) {
   return grid;
 }
 
-PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback) {
+PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback,
+                                const PathControl& control) {
   PathResult r = setup.model.kinematics == Kinematics::kLinear ? run_linear(setup, callback)
                  : setup.case_file.contact.solver == ContactSolver::kActiveSet
                      ? run_active_set(setup, callback)
-                     : run_continuation(setup, callback);
+                     : run_continuation(setup, callback, control);
   for (int k : {0, 2}) {
     const std::vector<cont::Event> found = critical_force_events(r.points, k);
     r.events.insert(r.events.end(), found.begin(), found.end());

@@ -41,6 +41,7 @@ struct IndentationSetup {
 IndenterPose default_indenter_pose(const CaseFile& c, const ShellModel& model);
 
 struct PathPoint {
+  int index = 0;  // position on the path (0 = the start point)
   IndentationState state;
   int iterations = 0;  // corrector (Newton / active-set) iterations that produced the point
   double step = 0;     // step that produced it (depth for grids, arclength for pseudo_arclength)
@@ -61,10 +62,24 @@ struct PathResult {
 // stops the run (status "stopped", every converged point kept).
 using PathCallback = std::function<bool(const PathPoint&, const cont::Vector& z)>;
 
+// Checkpoints and resume (continuation methods only; the linear fast path and the active-set
+// grid are not resumable - they are fast or independent per depth and simply rerun).
+struct PathControl {
+  // The continuation library's checkpoint file, written every checkpoint_interval points and at
+  // the end; beside it, "<checkpoint>.path.json" keeps the candidate set and the points. Empty:
+  // no checkpoints.
+  std::string checkpoint;
+  int checkpoint_interval = 10;
+  // Continue from `checkpoint` (same case): the points before it are kept, the path goes on
+  // from its state and reproduces the uninterrupted run (to roundoff).
+  bool resume = false;
+};
+
 // The depth grid of a path section.
 std::vector<double> depth_grid(const PathSpec& path);
 
 // Runs the path. Numerical failures do not throw: they end the path with the reason.
-PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback = {});
+PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback = {},
+                                const PathControl& control = {});
 
 }  // namespace si

@@ -53,7 +53,8 @@ constexpr const char* kRunHelp =
     "depth_mm, force_N, reaction_N, apex_w_mm, contact radius and area, apex curvatures, energy, "
     "work, KKT residuals, iterations: docs/results.md), path.json, events.json and VTU files with "
     "the contact pressure (path.pvd for ParaView). Ctrl-C stops after the current point and "
-    "writes what converged. Exit 1 if the path stops early.\n"
+    "writes what converged; continuation runs keep checkpoint.json and `--resume` continues "
+    "from it. Exit 1 if the path stops early.\n"
     "Examples:\n"
     "  shellindent run                                   (the paper's cap, results/paper_cap/)\n"
     "  shellindent run studies/paper_cap.yaml --out results/cap_0_90";
@@ -119,6 +120,9 @@ int run(int argc, char** argv) {
   run_cmd->add_option("--out", ro.out_dir, "output directory (default: output.dir of the case)");
   run_cmd->add_option("--threads", ro.threads, "assembly threads (0: OpenMP default)")
       ->capture_default_str();
+  run_cmd->add_flag("--resume", ro.resume,
+                    "continue a stopped continuation run from the checkpoint in the output "
+                    "directory (the points before it are kept)");
   si::FitCommandOptions fo;
   auto* fit_cmd = app.add_subcommand("fit", kFitHelp);
   fit_cmd->add_option("data", fo.data_file, "CSV file with a header line")

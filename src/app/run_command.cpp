@@ -145,22 +145,26 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
 
   Progress progress(err, cf.path.depth_max);
   std::vector<std::pair<double, std::string>> vtus;
-  int count = 0;
   g_interrupted = false;
   InterruptGuard guard;
   const PathCallback on_point = [&](const PathPoint& p, const cont::Vector& z) {
     progress.show(p);
     const int every = cf.output.vtu_every;
-    if (every > 0 && count % every == 0) {
+    if (every > 0 && p.index % every == 0) {
       char name[32];
-      std::snprintf(name, sizeof name, "path_%04d.vtu", count);
+      std::snprintf(name, sizeof name, "path_%04d.vtu", p.index);
       write_point_vtu(dir / name, setup, p.state, z);
       vtus.emplace_back(p.state.depth, name);
     }
-    ++count;
     return !g_interrupted;
   };
-  const PathResult r = run_indentation_path(setup, on_point);
+  PathControl control;
+  control.checkpoint = (dir / "checkpoint.json").string();
+  control.resume = o.resume;
+  if (o.resume && !std::filesystem::exists(control.checkpoint))
+    throw_input("nothing to resume: no checkpoint in the output directory",
+                Where{"command line", "--resume", control.checkpoint, 0});
+  const PathResult r = run_indentation_path(setup, on_point, control);
   progress.done();
 
   out << "Indentation of " << cf.file << " (" << r.method
