@@ -1,0 +1,54 @@
+// Issue 5: natural and pseudo-arclength continuation agree on a monotone path (the cap,
+// [0/90]2S, 0-2 mm): the natural run is asked for the depths the arclength run landed on, and
+// both must give the same solution there, to the corrector tolerance.
+#include <gtest/gtest.h>
+
+#include "analysis/indentation_run.hpp"
+#include "indentation_test_support.hpp"
+
+namespace si {
+namespace {
+
+CaseFile path_case(PathMethod method) {
+  CaseFile c = testing::coarse_cap_case("nonlinear", "[0/90]2S", "quarter");
+  c.path.method = method;
+  c.path.depth_max = 2.0;
+  c.path.step = 0.2;
+  c.path.step_min = 1e-4;
+  c.path.step_max = 0.5;
+  return c;
+}
+
+TEST(IndentationPaths, NaturalAndPseudoArclengthAgreeOnTheCap_0_90_2S) {
+  IndentationSetup arclength(path_case(PathMethod::kPseudoArclength), 1);
+  const PathResult a = run_indentation_path(arclength);
+  ASSERT_TRUE(a.completed) << a.reason;
+  ASSERT_GT(a.points.size(), 4u);
+
+  CaseFile c = path_case(PathMethod::kNatural);
+  c.path.depths.clear();
+  for (std::size_t i = 1; i < a.points.size(); ++i)
+    c.path.depths.push_back(a.points[i].state.depth);
+  IndentationSetup natural(c, 1);
+  const PathResult b = run_indentation_path(natural);
+  ASSERT_TRUE(b.completed) << b.reason;
+
+  // Compare at the arclength run's depths (the natural run may add substeps).
+  std::size_t j = 0;
+  for (const PathPoint& p : a.points) {
+    while (j < b.points.size() && b.points[j].state.depth < p.state.depth - 1e-12) ++j;
+    ASSERT_LT(j, b.points.size());
+    const IndentationState& x = p.state;
+    const IndentationState& y = b.points[j].state;
+    ASSERT_NEAR(x.depth, y.depth, 1e-12);
+    // Corrector tolerance 1e-10 of the force scale kappa * step: 1e-8 relative is safe.
+    EXPECT_NEAR(x.force, y.force, 1e-8 * (1 + x.force)) << x.depth;
+    EXPECT_NEAR(x.apex_curvature[0], y.apex_curvature[0],
+                1e-8 * (1e-3 + std::abs(x.apex_curvature[0])));
+    EXPECT_NEAR(x.energy, y.energy, 1e-8 * (1 + x.energy)) << x.depth;
+  }
+  EXPECT_GT(a.points.back().state.force, 0.0);
+}
+
+}  // namespace
+}  // namespace si
