@@ -67,7 +67,7 @@ void BM_LinearPath(benchmark::State& st) {
 // 100 depths by natural continuation with the KINSOL corrector (setup included, small).
 void BM_NonlinearPath(benchmark::State& st) {
   for (auto _ : st) {
-    IndentationSetup s(paper_cap(st, "nonlinear", 10.0), 0, st.range(2) == 0 ? "umfpack" : "klu");
+    IndentationSetup s(paper_cap(st, "nonlinear", 10.0), 1, st.range(2) == 0 ? "umfpack" : "klu");
     const PathResult r = run_indentation_path(s);
     st.PauseTiming();
     report(st, s, r);
