@@ -162,38 +162,6 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
 
 // The run's own part of a checkpoint, beside the library's: the candidate set (append-only, so
 // a checkpoint's size tells how much of it applies) and the points written so far.
-nlohmann::json point_json(const PathPoint& p) {
-  const IndentationState& s = p.state;
-  return {s.depth,
-          s.force,
-          s.reaction,
-          s.apex_deflection,
-          s.contact_radius,
-          s.contact_area,
-          s.contact_nodes,
-          s.apex_curvature[0],
-          s.apex_curvature[1],
-          s.apex_curvature[2],
-          s.energy,
-          p.work,
-          s.min_gap,
-          s.min_multiplier,
-          s.max_complementarity,
-          p.iterations,
-          p.step};
-}
-
-PathPoint point_of(const nlohmann::json& j) {
-  PathPoint p;
-  IndentationState& s = p.state;
-  s.depth = j[0], s.force = j[1], s.reaction = j[2], s.apex_deflection = j[3];
-  s.contact_radius = j[4], s.contact_area = j[5], s.contact_nodes = j[6];
-  s.apex_curvature = Vector3d(j[7], j[8], j[9]);
-  s.energy = j[10], p.work = j[11], s.min_gap = j[12], s.min_multiplier = j[13];
-  s.max_complementarity = j[14], p.iterations = j[15], p.step = j[16];
-  return p;
-}
-
 std::string sidecar_path(const std::string& checkpoint) {
   return checkpoint + ".path.json";
 }
@@ -201,7 +169,7 @@ std::string sidecar_path(const std::string& checkpoint) {
 void write_sidecar(const std::string& checkpoint, const IndentationProblem& problem,
                    const PathResult& r) {
   nlohmann::json points = nlohmann::json::array();
-  for (const PathPoint& p : r.points) points.push_back(point_json(p));
+  for (const PathPoint& p : r.points) points.push_back(path_point_values(p));
   const nlohmann::json j = {{"candidates", problem.candidates()}, {"points", points}};
   const std::string tmp = sidecar_path(checkpoint) + ".tmp";
   std::ofstream(tmp) << j.dump() << "\n";
@@ -229,7 +197,7 @@ cont::Checkpoint restore(const std::string& checkpoint, IndentationProblem& prob
   problem.restore_candidates(candidates);
   const std::size_t kept = std::min(c.branch.points.size(), side["points"].size());
   for (std::size_t i = 0; i < kept; ++i) {
-    r.points.push_back(point_of(side["points"][i]));
+    r.points.push_back(path_point_from_values(side["points"][i].get<std::vector<double>>()));
     r.points.back().index = static_cast<int>(i);
   }
   return c;
@@ -306,6 +274,39 @@ IndentationSetup::IndentationSetup(CaseFile c, int threads, const std::string& l
     // The problem names `indenter`; the case's pose is what the user can change.
     throw Error(e.kind(), e.reason(), Where{case_file.file, where, value, 0});
   }
+}
+
+std::vector<double> path_point_values(const PathPoint& p) {
+  const IndentationState& s = p.state;
+  return {s.depth,
+          s.force,
+          s.reaction,
+          s.apex_deflection,
+          s.contact_radius,
+          s.contact_area,
+          static_cast<double>(s.contact_nodes),
+          s.apex_curvature[0],
+          s.apex_curvature[1],
+          s.apex_curvature[2],
+          s.energy,
+          p.work,
+          s.min_gap,
+          s.min_multiplier,
+          s.max_complementarity,
+          static_cast<double>(p.iterations),
+          p.step};
+}
+
+PathPoint path_point_from_values(const std::vector<double>& v) {
+  SI_REQUIRE(v.size() == 17, "a path point has 17 values");
+  PathPoint p;
+  IndentationState& s = p.state;
+  s.depth = v[0], s.force = v[1], s.reaction = v[2], s.apex_deflection = v[3];
+  s.contact_radius = v[4], s.contact_area = v[5], s.contact_nodes = static_cast<int>(v[6]);
+  s.apex_curvature = Vector3d(v[7], v[8], v[9]);
+  s.energy = v[10], p.work = v[11], s.min_gap = v[12], s.min_multiplier = v[13];
+  s.max_complementarity = v[14], p.iterations = static_cast<int>(v[15]), p.step = v[16];
+  return p;
 }
 
 std::vector<double> depth_grid(const PathSpec& path) {

@@ -48,6 +48,13 @@ struct PathPoint {
   double work = 0;     // indenter work so far, trapezoidal integral of force over depth, N mm
 };
 
+// A point's scalar results in the order of path.csv's columns (io/path_results.hpp, docs/
+// results.md): depth, force, reaction, apex deflection, contact radius, area, nodes, k11, k12,
+// k22, energy, work, min gap, min multiplier, max complementarity, iterations, step. The inverse
+// restores those fields (checkpoints); the per-node vectors of the state stay empty.
+std::vector<double> path_point_values(const PathPoint& p);
+PathPoint path_point_from_values(const std::vector<double>& v);
+
 struct PathResult {
   std::string method;  // "linear fast path", "natural", "pseudo_arclength", "active_set"
   std::vector<PathPoint> points;

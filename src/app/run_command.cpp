@@ -13,6 +13,7 @@
 #include "analysis/result_fields.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_directory.hpp"
 #include "io/path_results.hpp"
 #include "io/vtu_writer.hpp"
 
@@ -34,14 +35,6 @@ class InterruptGuard {
  private:
   void (*previous_)(int) = nullptr;
 };
-
-void prepare_output_directory(const std::filesystem::path& dir, const Where& where) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
-    throw_input("cannot use this output directory" + (ec ? ": " + ec.message() : std::string()),
-                where);
-}
 
 // The VTU of one point: resultants plus the contact pressure and force at every node.
 void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& s,

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
+#include "io/output_directory.hpp"
 #include "io/vtu_writer.hpp"
 #include "model/static_solver.hpp"
 
@@ -93,14 +94,6 @@ void write_results(const std::filesystem::path& dir, const ShellModel& m,
 bool on_nominal_grid(double load_factor, int steps) {
   const double k = load_factor * steps;
   return std::abs(k - std::round(k)) < 1e-9 * steps;
-}
-
-void prepare_output_directory(const std::filesystem::path& dir, const Where& where) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
-    throw_input("cannot use this output directory" + (ec ? ": " + ec.message() : std::string()),
-                where);
 }
 
 }  // namespace

@@ -23,27 +23,6 @@ const char* kColumns[] = {"depth_mm",
                           "iterations",
                           "step"};
 
-std::vector<double> values(const PathPoint& p) {
-  const IndentationState& s = p.state;
-  return {s.depth,
-          s.force,
-          s.reaction,
-          s.apex_deflection,
-          s.contact_radius,
-          s.contact_area,
-          static_cast<double>(s.contact_nodes),
-          s.apex_curvature[0],
-          s.apex_curvature[1],
-          s.apex_curvature[2],
-          s.energy,
-          p.work,
-          s.min_gap,
-          s.min_multiplier,
-          s.max_complementarity,
-          static_cast<double>(p.iterations),
-          p.step};
-}
-
 double monitor(const cont::Event& e, const std::vector<std::string>& names,
                const std::string& name) {
   for (std::size_t i = 0; i < names.size(); ++i)
@@ -65,7 +44,7 @@ std::string path_csv(const PathResult& result) {
   os.precision(12);
   os << path_csv_header() << '\n';
   for (const PathPoint& p : result.points) {
-    const std::vector<double> v = values(p);
+    const std::vector<double> v = path_point_values(p);
     for (std::size_t i = 0; i < v.size(); ++i) os << (i ? "," : "") << v[i];
     os << '\n';
   }
@@ -93,7 +72,7 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
   nlohmann::json points = nlohmann::json::array();
   for (const PathPoint& p : result.points) {
     nlohmann::json row;
-    const std::vector<double> v = values(p);
+    const std::vector<double> v = path_point_values(p);
     for (std::size_t i = 0; i < v.size(); ++i) row[kColumns[i]] = v[i];
     points.push_back(row);
   }

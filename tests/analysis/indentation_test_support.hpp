@@ -63,6 +63,18 @@ inline cont::NewtonSettings tight_kinsol_settings(const IndentationProblem& p) {
   return s;
 }
 
+// The coarse quarter cap with a nonlinear depth path to depth_max (mm) by `method`.
+inline CaseFile coarse_cap_path_case(const std::string& layup, PathMethod method, double depth_max,
+                                     double step, double step_max) {
+  CaseFile c = coarse_cap_case("nonlinear", layup, "quarter");
+  c.path.method = method;
+  c.path.depth_max = depth_max;
+  c.path.step = step;
+  c.path.step_min = 1e-4;
+  c.path.step_max = step_max;
+  return c;
+}
+
 // A model, its indenter (above the apex, moving along -z) and the problem, kept together.
 struct IndentationFixture {
   CaseFile case_file;

@@ -10,13 +10,7 @@ namespace si {
 namespace {
 
 CaseFile path_case(PathMethod method) {
-  CaseFile c = testing::coarse_cap_case("nonlinear", "[0/90]2S", "quarter");
-  c.path.method = method;
-  c.path.depth_max = 2.0;
-  c.path.step = 0.2;
-  c.path.step_min = 1e-4;
-  c.path.step_max = 0.5;
-  return c;
+  return testing::coarse_cap_path_case("[0/90]2S", method, 2.0, 0.2, 0.5);
 }
 
 TEST(IndentationPaths, NaturalAndPseudoArclengthAgreeOnTheCap_0_90_2S) {

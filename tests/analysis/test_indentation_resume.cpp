@@ -12,13 +12,7 @@ namespace si {
 namespace {
 
 CaseFile resume_case(PathMethod method) {
-  CaseFile c = testing::coarse_cap_case("nonlinear", "[0/0]2S", "quarter");
-  c.path.method = method;
-  c.path.depth_max = 0.8;
-  c.path.step = 0.1;
-  c.path.step_min = 1e-4;
-  c.path.step_max = 0.15;
-  return c;
+  return testing::coarse_cap_path_case("[0/0]2S", method, 0.8, 0.1, 0.15);
 }
 
 struct Killed : std::runtime_error {

@@ -6,6 +6,8 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace si::testing {
@@ -35,6 +37,20 @@ inline fs::path fresh_dir(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
+}
+
+// Writes `text` as DIR/case.yaml and returns the path.
+inline fs::path write_case(const fs::path& dir, const std::string& text) {
+  const fs::path path = dir / "case.yaml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+inline std::string read_file(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 inline bool contains(const std::string& text, const std::string& part) {

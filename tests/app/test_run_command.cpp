@@ -19,6 +19,7 @@ namespace fs = std::filesystem;
 using testing::contains;
 using testing::fresh_dir;
 using testing::run_cli;
+using testing::write_case;
 
 // A coarse quarter of the paper's cap; `indenter` and `extra` replace or add sections.
 std::string cap_case(const std::string& kinematics, const std::string& indenter,
@@ -31,19 +32,6 @@ std::string cap_case(const std::string& kinematics, const std::string& indenter,
          kinematics + "\nindenter: " + indenter + "\npath: " + path + "\noutput: {vtu_every: 2}\n";
 }
 
-fs::path write_case(const fs::path& dir, const std::string& text) {
-  const fs::path path = dir / "case.yaml";
-  std::ofstream(path) << text;
-  return path;
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 TEST(RunCommand, LinearPathWritesTableCsvJsonAndVtu) {
   const fs::path dir = fresh_dir("run_linear");
   const fs::path c = write_case(dir, cap_case("linear", "{shape: sphere, radius: 12.7 mm}",
@@ -51,18 +39,18 @@ TEST(RunCommand, LinearPathWritesTableCsvJsonAndVtu) {
   const auto r = run_cli("run '" + c.string() + "' --out '" + (dir / "out").string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(contains(r.output, "linear fast path")) << r.output;
-  const std::string csv = read(dir / "out" / "path.csv");
+  const std::string csv = testing::read_file(dir / "out" / "path.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')), path_csv_header());
   EXPECT_EQ(csv.substr(0, 16), "depth_mm,force_N");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 6);  // header + depths 0, 0.25, ..., 1
-  const auto json = nlohmann::json::parse(read(dir / "out" / "path.json"));
+  const auto json = nlohmann::json::parse(testing::read_file(dir / "out" / "path.json"));
   EXPECT_EQ(json["status"], "completed");
   EXPECT_EQ(json["points"].size(), 5u);
   EXPECT_GT(json["points"][4]["force_N"].get<double>(), 0.0);
   EXPECT_TRUE(fs::exists(dir / "out" / "path_0000.vtu"));
   EXPECT_TRUE(fs::exists(dir / "out" / "path_0004.vtu"));
-  EXPECT_TRUE(contains(read(dir / "out" / "path_0004.vtu"), "contact_pressure"));
-  EXPECT_TRUE(contains(read(dir / "out" / "path.pvd"), "path_0002.vtu"));
+  EXPECT_TRUE(contains(testing::read_file(dir / "out" / "path_0004.vtu"), "contact_pressure"));
+  EXPECT_TRUE(contains(testing::read_file(dir / "out" / "path.pvd"), "path_0002.vtu"));
 }
 
 TEST(RunCommand, IndenterBesideTheShellIsRefused) {

@@ -17,6 +17,7 @@ namespace fs = std::filesystem;
 using testing::contains;
 using testing::fresh_dir;
 using testing::run_cli;
+using testing::write_case;
 
 // A coarse clamped isotropic plate under a centre force: a few hundred dofs, runs in well under
 // a second.
@@ -31,12 +32,6 @@ std::string tiny_case(const std::string& layup, const std::string& symmetry,
          "mesh: {size_apex: 4 mm, size_edge: 6 mm, refine_radius: 10 mm, symmetry: " +
          symmetry + "}\nkinematics: " + kinematics +
          "\nload: {type: apex_force, force: 100 N, steps: 2}\n";
-}
-
-fs::path write_case(const fs::path& dir, const std::string& text) {
-  const fs::path path = dir / "case.yaml";
-  std::ofstream(path) << text;
-  return path;
 }
 
 std::string read_text(const fs::path& path) {
