@@ -172,8 +172,13 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   write_file_atomically((dir / "path.csv").string(), path_csv(r));
   write_file_atomically((dir / "path.json").string(), path_json(setup, r).dump(2) + "\n");
   write_file_atomically((dir / "events.json").string(), events_json(r).dump(2) + "\n");
+  const bool arclength = r.method == "pseudo_arclength";
+  if (arclength)
+    write_file_atomically((dir / "path_grid.csv").string(),
+                          path_grid_csv(r, cf.path.step, cf.path.depth_max));
   if (!vtus.empty()) write_file_atomically((dir / "path.pvd").string(), pvd_text(vtus));
   err << "wrote " << (dir / "path.csv").string() << ", path.json, events.json"
+      << (arclength ? ", path_grid.csv (interpolated at the depth steps)" : "")
       << (vtus.empty() ? "" : ", path.pvd and " + std::to_string(vtus.size()) + " VTU files")
       << "\n";
   if (r.completed) return 0;

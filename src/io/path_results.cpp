@@ -1,5 +1,6 @@
 #include "io/path_results.hpp"
 
+#include <cmath>
 #include <sstream>
 
 namespace si {
@@ -47,6 +48,36 @@ std::string path_csv(const PathResult& result) {
     const std::vector<double> v = path_point_values(p);
     for (std::size_t i = 0; i < v.size(); ++i) os << (i ? "," : "") << v[i];
     os << '\n';
+  }
+  return os.str();
+}
+
+std::string path_grid_csv(const PathResult& result, double dh, double depth_max) {
+  std::ostringstream os;
+  os.precision(12);
+  os << path_csv_header() << ",interpolated\n";
+  const auto& pts = result.points;
+  const int n = static_cast<int>(std::floor(depth_max / dh + 1e-9));
+  for (int k = 0; k <= n; ++k) {
+    const double d = k * dh;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const double d0 = pts[i].state.depth;
+      if (std::abs(d0 - d) <= 1e-9 * (1 + d)) {  // a converged point
+        for (double v : path_point_values(pts[i])) os << v << ',';
+        os << "0\n";
+        break;
+      }
+      if (i + 1 == pts.size()) break;
+      const double d1 = pts[i + 1].state.depth;
+      if ((d - d0) * (d - d1) < 0) {  // inside this segment: first passage
+        const double t = (d - d0) / (d1 - d0);
+        const std::vector<double> a = path_point_values(pts[i]);
+        const std::vector<double> b = path_point_values(pts[i + 1]);
+        for (std::size_t c = 0; c < a.size(); ++c) os << (1 - t) * a[c] + t * b[c] << ',';
+        os << "1\n";
+        break;
+      }
+    }
   }
   return os.str();
 }

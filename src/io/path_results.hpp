@@ -5,6 +5,10 @@
 //     min_multiplier_N, max_complementarity_Nmm, iterations, step
 //   path.json   the same points plus the run's description, status and events
 //   events.json the located events (type, monitor, depth, force, curvatures, step)
+//   path_grid.csv (pseudo-arclength runs) the same columns at fixed depths 0, dh, 2 dh, ...,
+//     interpolated linearly on the branch between its converged points, plus a last column
+//     `interpolated` (0: a converged point, 1: interpolated); where a snap-back passes a depth
+//     several times, its first passage
 // Text is produced here; the caller writes it atomically (io/atomic_file.hpp).
 #pragma once
 
@@ -18,6 +22,7 @@ namespace si {
 // The header line of path.csv (without newline).
 std::string path_csv_header();
 std::string path_csv(const PathResult& result);
+std::string path_grid_csv(const PathResult& result, double dh, double depth_max);
 nlohmann::json events_json(const PathResult& result);
 nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result);
 

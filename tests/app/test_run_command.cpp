@@ -98,3 +98,35 @@ TEST(RunCommand, ZeroDirectionIsRefused) {
 
 }  // namespace
 }  // namespace si
+
+namespace si {
+namespace {
+
+// Issue 5 item 5: a pseudo-arclength run also reports the fixed depths 0, step, 2 step, ... by
+// interpolation on the branch, each row marked; converged points on the grid are marked 0.
+TEST(RunCommand, PseudoArclengthWritesTheInterpolatedDepthGrid) {
+  const fs::path dir = fresh_dir("run_grid");
+  const fs::path c = testing::write_case(
+      dir,
+      cap_case("nonlinear", "{shape: sphere, radius: 12.7 mm}",
+               "{method: pseudo_arclength, depth_max: 0.5 mm, step: 0.1 mm, step_max: 0.3 mm}"));
+  const auto r = run_cli("run '" + c.string() + "' --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(dir / "out" / "path_grid.csv");
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, path_csv_header() + ",interpolated");
+  std::vector<double> depths;
+  int interpolated = 0;
+  while (std::getline(in, line)) {
+    depths.push_back(std::stod(line.substr(0, line.find(','))));
+    interpolated += line.back() == '1';
+  }
+  ASSERT_EQ(depths.size(), 6u);  // 0, 0.1, ..., 0.5
+  for (std::size_t i = 0; i < depths.size(); ++i) EXPECT_NEAR(depths[i], 0.1 * i, 1e-12);
+  EXPECT_GT(interpolated, 0);
+  EXPECT_LT(interpolated, 6);  // the start and the end are converged points
+}
+
+}  // namespace
+}  // namespace si
