@@ -18,11 +18,10 @@ namespace {
 constexpr const char* kDescription =
     "shellindent " SHELLINDENT_VERSION
     " - static indentation of laminated composite shells by rigid indenters.\n"
-    "Section analysis (CLT, FSDT, variational-asymptotic Reissner-Mindlin law) and static shell\n"
-    "runs under apex force or pressure; indentation by rigid indenters along a depth path "
-    "(frictionless Lagrange-multiplier contact, KINSOL, continuation). Quantities carry units: "
-    "\"0.475 mm\",\n"
-    "\"130 GPa\", \"45 deg\". Internal units are mm, N, MPa.";
+    "Section analysis (CLT, FSDT, variational-asymptotic Reissner-Mindlin law), static shell runs\n"
+    "under apex force or pressure, and indentation paths (frictionless Lagrange-multiplier\n"
+    "contact solved by KINSOL, natural or pseudo-arclength continuation in the depth).\n"
+    "Quantities carry units: \"0.475 mm\", \"130 GPa\", \"45 deg\". Internal units: mm, N, MPa.";
 
 constexpr const char* kSectionHelp =
     "Section properties of a laminate: CLT A, B, D; VAM A_R, transverse shear G (VAM fit, FSDT "
