@@ -12,6 +12,8 @@ namespace si::cont {
 namespace {
 
 constexpr double kDegree = 0.017453292519943295;  // pi / 180
+// Problem::adapt rounds at one point (each one a re-solve) before the growth is taken as done.
+constexpr int kMaxAdaptRounds = 10;
 
 std::string fmt(double v) {
   char buf[32];
@@ -216,13 +218,21 @@ class Tracer {
     return true;
   }
 
+  // The problem may grow (Problem::adapt); the point is then re-solved at the same p, and that
+  // re-solved point replaces the accepted one in the branch (the one before the growth need not
+  // solve the grown problem: e.g. a node outside a contact candidate set may penetrate). Repeated
+  // while the problem keeps growing at this p.
   bool adapt() {
     Vector x = state_.current.point.x;
     const double p = state_.current.point.p;
-    if (!problem_.adapt(x, p)) return true;
-    const NewtonResult r = solve_at(problem_, x, p, settings_.newton);
-    if (!r.converged)
-      return finish(Status::kStepTooSmall, "no solution after Problem::adapt: " + r.reason);
+    bool adapted = false;
+    for (int round = 0; round < kMaxAdaptRounds && problem_.adapt(x, p); ++round) {
+      adapted = true;
+      const NewtonResult r = solve_at(problem_, x, p, settings_.newton);
+      if (!r.converged)
+        return finish(Status::kStepTooSmall, "no solution after Problem::adapt: " + r.reason);
+    }
+    if (!adapted) return true;
     const Point old = state_.current.point;
     const double sign_p = old.tangent_p != 0.0 ? old.tangent_p : settings_.direction;
     if (!analyse(x, p, Vector(), sign_p, state_.current))
@@ -231,6 +241,7 @@ class Tracer {
     state_.current.point.step = old.step;
     state_.current.point.arclength = old.arclength;
     state_.has_previous = false;
+    if (!branch_.points.empty()) branch_.points.back() = state_.current.point;
     return true;
   }
 

@@ -194,6 +194,9 @@ cont::Vector IndentationProblem::initial_point() const {
 }
 
 std::vector<NodeState> IndentationProblem::node_states(const cont::Vector& z) const {
+  SI_REQUIRE(z.size() == size(), "indentation: unknown vector of the wrong size (" +
+                                     std::to_string(z.size()) + " for " + std::to_string(size()) +
+                                     ")");
   std::vector<NodeState> s;
   chart_.states(z.head(chart_.size()), 1.0, s);
   return s;
@@ -384,20 +387,20 @@ std::vector<int> IndentationProblem::signature(const cont::Vector& z, double h) 
 }
 
 bool IndentationProblem::adapt(cont::Vector& z, double h) {
-  const int nf = chart_.size();
   const std::vector<NodeState> s = node_states(z);
-  const std::set<int> current(candidates_.begin(), candidates_.end());
+  std::vector<bool> is_candidate(model_.mesh.num_nodes(), false);
+  for (int n : candidates_) is_candidate[n] = true;
+  // Every node not yet a candidate whose contact point is now within candidate_depth of the
+  // indenter (measured as travel along its path): the set follows the deformed shell.
   std::set<int> added;
-  for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    if (!(z[nf + static_cast<int>(i)] > 0)) continue;
-    for (int nb : neighbours_[candidates_[i]]) {
-      if (current.count(nb) || added.count(nb)) continue;
-      const Vector3d p = geometry_[nb].X + s[nb].u + geometry_[nb].offset * s[nb].d;
-      const TravelGap g = travel_gap(indenter_, direction_, p, t0_ + h, false);
-      if (g.hits && g.travel - t0_ - h <= options_.candidate_depth) added.insert(nb);
-    }
+  for (int n = 0; n < model_.mesh.num_nodes(); ++n) {
+    if (is_candidate[n]) continue;
+    const Vector3d p = geometry_[n].X + s[n].u + geometry_[n].offset * s[n].d;
+    const TravelGap g = travel_gap(indenter_, direction_, p, t0_ + h, false);
+    if (g.hits && g.travel - t0_ - h <= options_.candidate_depth) added.insert(n);
   }
   if (added.empty()) return false;
+  const int nf = chart_.size();
   const cont::Vector lambda = z.tail(candidates_.size());
   std::vector<int> nodes = candidates_;
   nodes.insert(nodes.end(), added.begin(), added.end());

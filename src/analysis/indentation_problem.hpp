@@ -18,8 +18,8 @@
 // node_gap.hpp), so the only nonlinearity is phi; this is the paper's linear setting.
 //
 // Candidates: the nodes whose contact point the indenter can reach within `candidate_depth` of
-// travel past first touch (reference configuration). adapt() grows the set when a node in
-// contact has a neighbour outside it that the indenter can now reach within that depth.
+// travel past first touch (reference configuration). adapt() grows the set, after each accepted
+// point, by every node whose contact point the indenter can now reach within that depth.
 #pragma once
 
 #include <memory>
