@@ -7,8 +7,7 @@ namespace si {
 LoadProblem::LoadProblem(const Mesh& mesh, const std::vector<Support>& supports,
                          const ShellElement& element, const ShellLaw& law, const Loads& loads,
                          LoadProblemOptions options)
-    : mesh_(mesh),
-      options_(std::move(options)),
+    : options_(std::move(options)),
       dofs_(make_dof_map(mesh, supports)),
       assembler_(mesh, dofs_, element, law, Kinematics::kNonlinear, options_.threads),
       assembly_(assembler_.make_assembly()),

@@ -38,7 +38,7 @@ struct LoadProblemOptions {
 
 class LoadProblem : public cont::Problem {
  public:
-  // Keeps references to mesh, element and loads. Throws an input error for follower loads,
+  // Keeps references to mesh and element. Throws an input error for follower loads,
   // invalid loads, supports or monitor node sets.
   LoadProblem(const Mesh& mesh, const std::vector<Support>& supports, const ShellElement& element,
               const ShellLaw& law, const Loads& loads, LoadProblemOptions options);
@@ -71,7 +71,6 @@ class LoadProblem : public cont::Problem {
   // Jacobian at the point of its last residual: one force+tangent assembly costs less than two).
   void internal_force(const cont::Vector& x, Eigen::VectorXd& f_free);
 
-  const Mesh& mesh_;
   LoadProblemOptions options_;
   DofMap dofs_;
   Assembler assembler_;

@@ -25,6 +25,7 @@
 #include "analysis/load_problem.hpp"
 #include "continuation/pseudo_arclength.hpp"
 #include "model/cylindrical_panel_mesh.hpp"
+#include "model/dof_map.hpp"
 #include "shell/shell_element.hpp"
 #include "shell/shell_law.hpp"
 
@@ -154,6 +155,14 @@ std::vector<PathPoint> branch_path(const cont::Branch& branch) {
   return path;
 }
 
+// The straight edge hinged, the curved edge free, symmetry at the crown (x = 0) and at the axial
+// mid-plane (y = 0).
+std::vector<Support> quarter_roof_supports() {
+  return {{SupportKind::kHinged, "straight_edges", -1, {}},
+          {SupportKind::kSymmetryPlane, "crown", 0, {}},
+          {SupportKind::kSymmetryPlane, "axial_midplane", 1, {}}};
+}
+
 struct RoofRun {
   cont::Branch branch;
   std::vector<PathPoint> path;
@@ -166,9 +175,7 @@ struct RoofRun {
 RoofRun trace_roof(double thickness, int n, bool snap_back) {
   const Mesh mesh = cylindrical_panel_mesh(kRadius, kLength, kHalfAngleRad * 180 / kPi, n, n,
                                            PanelPart::kQuarter);
-  const std::vector<Support> supports = {{SupportKind::kHinged, "straight_edges", -1, {}},
-                                         {SupportKind::kSymmetryPlane, "crown", 0, {}},
-                                         {SupportKind::kSymmetryPlane, "axial_midplane", 1, {}}};
+  const std::vector<Support> supports = quarter_roof_supports();
   Loads loads;
   loads.points.push_back({"center", Vector3d(0, 0, -kPmax / 4), false});
   const auto element = make_shell_element("mitc4");
@@ -266,6 +273,52 @@ TEST(SzeHingedRoof, SzeLiuLo2004_Sec38d_IsotropicH6p35_FirstLimitLoadAndSnapBack
   ASSERT_EQ(minima.size(), 1u);
   EXPECT_TRUE(maxima[0].located && minima[0].located);
   EXPECT_LT(maxima[0].arclength, minima[0].arclength);
+}
+
+// The Jacobian that factorize() hands to the continuation is the derivative of residual() in the
+// chart (K T + D, shell_chart.hpp) also away from equilibrium and at finite rotations: for a
+// solve y = J^-1 b at a deformed, unbalanced state, the central difference of F along y returns b
+// to truncation and round-off; and residual_p is -f_ext.
+TEST(SzeHingedRoof, LoadProblemJacobianMatchesCentralDifference) {
+  const Mesh mesh = cylindrical_panel_mesh(kRadius, kLength, kHalfAngleRad * 180 / kPi, 4, 4,
+                                           PanelPart::kQuarter);
+  const std::vector<Support> supports = quarter_roof_supports();
+  Loads loads;
+  loads.points.push_back({"center", Vector3d(0, 0, -kPmax / 4), false});
+  const auto element = make_shell_element("mitc4");
+  LoadProblemOptions options;
+  options.threads = 1;
+  LoadProblem problem(mesh, supports, *element, isotropic_shell_law(kE, kNu, 6.35), loads, options);
+  // A state with rotations of about 0.2 rad and displacements of about 10 mm.
+  cont::Vector x(problem.size());
+  for (int i = 0; i < x.size(); ++i) x[i] = 0.1 * std::sin(1.0 + 0.7 * i) + 0.1 * std::cos(0.3 * i);
+  for (int n = 0; n < mesh.num_nodes(); ++n)
+    for (int l = 0; l < 3; ++l) {
+      const int eq = problem.dofs().equation(DofMap::dof(n, l));
+      if (eq >= 0) x[eq] *= 100;
+    }
+  const double lambda = 0.3;
+  cont::Vector b = cont::Vector::Ones(problem.size());
+  ASSERT_TRUE(problem.factorize(x, lambda));
+  cont::Vector y = b;
+  ASSERT_TRUE(problem.solve(y));
+  // Largest chart step 1e-3 (mm or rad). Measured |J y - b|: 4.6e-5 at 1e-2 (truncation,
+  // O(eps^2)), 1.5e-6 at 1e-3, 1.7e-5 at 1e-4 (round-off of the membrane forces, O(1/eps)). A
+  // Jacobian without the chart transform errs by O(|theta|) = 0.1.
+  const double eps = 1e-3 / y.cwiseAbs().maxCoeff();
+  cont::Vector Fp, Fm;
+  ASSERT_TRUE(problem.residual(x + eps * y, lambda, Fp));
+  ASSERT_TRUE(problem.residual(x - eps * y, lambda, Fm));
+  const cont::Vector Jy = (Fp - Fm) / (2 * eps);
+  EXPECT_LT((Jy - b).cwiseAbs().maxCoeff(), 1e-5) << "largest |J y - b| with |b| = 1";
+
+  cont::Vector dF;
+  ASSERT_TRUE(problem.residual_p(x, lambda, dF));
+  cont::Vector F0, F1;
+  ASSERT_TRUE(problem.residual(x, 0.0, F0));
+  ASSERT_TRUE(problem.residual(x, 1.0, F1));
+  EXPECT_LT((F1 - F0 - dF).cwiseAbs().maxCoeff(), 1e-9 * kPmax);
+  EXPECT_NEAR(dF.sum(), kPmax / 4, 1e-9 * kPmax);  // -f_ext: the quarter load, downwards
 }
 
 // DISABLED: the path of case (d) misses 2 % at its last tabulated points. Largest errors
