@@ -190,8 +190,8 @@ RoofRun trace_roof(double thickness, int n, bool snap_back) {
   // load factor: the centre deflects 10-40 mm over the load range.
   settings.parameter_weight = 10;
   settings.step_initial = 0.2;
-  settings.step_max = 0.25;
-  settings.event_tolerance = 1e-6;
+  settings.step_max = 0.25;         // about 100 points per path, for the linear interpolation
+  settings.event_tolerance = 1e-6;  // arclength; the limit load is second order in it
   settings.p_max = 1.1;
   settings.max_steps = 300;
   // ||F||_inf <= 1e-8 of the quarter load Pmax/4: the residual's round-off floor is about
