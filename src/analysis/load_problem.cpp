@@ -1,0 +1,114 @@
+#include "analysis/load_problem.hpp"
+
+#include "core/error.hpp"
+
+namespace si {
+
+LoadProblem::LoadProblem(const Mesh& mesh, const std::vector<Support>& supports,
+                         const ShellElement& element, const ShellLaw& law, const Loads& loads,
+                         LoadProblemOptions options)
+    : options_(std::move(options)),
+      dofs_(make_dof_map(mesh, supports)),
+      assembler_(mesh, dofs_, element, law, Kinematics::kNonlinear, options_.threads),
+      assembly_(assembler_.make_assembly()),
+      chart_(mesh, dofs_),
+      solver_(make_linear_solver(options_.linear_solver)) {
+  validate(mesh, loads);
+  SI_REQUIRE(!loads.has_follower(), "LoadProblem: follower pressures are not supported");
+  load_ = dofs_.restrict_to_free(fixed_load_vector(mesh, loads));
+  for (const DisplacementMonitor& m : options_.displacements) {
+    const auto it = mesh.node_sets.find(m.node_set);
+    if (it == mesh.node_sets.end() || it->second.empty())
+      throw_input("LoadProblem: monitor " + m.name + ": no node set \"" + m.node_set + "\"");
+    monitor_nodes_.push_back(it->second);
+  }
+}
+
+LoadProblem::~LoadProblem() = default;
+
+int LoadProblem::size() const {
+  return chart_.size();
+}
+
+std::vector<NodeState> LoadProblem::node_states(const cont::Vector& x) const {
+  std::vector<NodeState> s;
+  chart_.states(x, 1.0, s);
+  return s;
+}
+
+void LoadProblem::internal_force(const cont::Vector& x, Eigen::VectorXd& f_free) {
+  if (assembled_x_.size() != x.size() || assembled_x_ != x) {
+    assembled_x_.resize(0);  // invalid while assembling (an element may throw)
+    chart_.states(x, 1.0, scratch_states_);
+    assembler_.assemble(scratch_states_, ElementRequest{true, true}, assembly_);
+    assembled_x_ = x;
+  }
+  f_free = dofs_.restrict_to_free(assembly_.internal_force);
+}
+
+bool LoadProblem::residual(const cont::Vector& x, double lambda, cont::Vector& F) {
+  try {
+    internal_force(x, F);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::kNumerical) throw;
+    return false;
+  }
+  F -= lambda * load_;
+  return F.allFinite();
+}
+
+bool LoadProblem::factorize(const cont::Vector& x, double lambda) {
+  cont::Vector r;
+  try {
+    internal_force(x, r);
+    r -= lambda * load_;
+    jacobian_ = assembly_.tangent;
+    chart_.to_chart_jacobian(x, r, jacobian_);
+    if (!analyzed_) {
+      solver_->analyze(jacobian_);
+      analyzed_ = true;
+    }
+    solver_->factorize(jacobian_);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::kNumerical) throw;
+    return false;
+  }
+  return true;
+}
+
+bool LoadProblem::solve(cont::Vector& b) {
+  b = solver_->solve(b);
+  return b.allFinite();
+}
+
+bool LoadProblem::residual_p(const cont::Vector&, double, cont::Vector& out) {
+  out = -load_;
+  return true;
+}
+
+double LoadProblem::inner(const cont::Vector& a, const cont::Vector& b) const {
+  return a.dot(b) / static_cast<double>(a.size());
+}
+
+std::vector<std::string> LoadProblem::monitor_names() const {
+  std::vector<std::string> names{"load_factor"};
+  for (const DisplacementMonitor& m : options_.displacements) names.push_back(m.name);
+  return names;
+}
+
+// No assembly: the continuation evaluates monitors off the branch too.
+cont::Vector LoadProblem::monitors(const cont::Vector& x, double lambda) {
+  cont::Vector m(1 + monitor_nodes_.size());
+  m[0] = lambda;
+  if (monitor_nodes_.empty()) return m;
+  const std::vector<NodeState> s = node_states(x);
+  for (std::size_t i = 0; i < monitor_nodes_.size(); ++i) {
+    const Vector3d e = options_.displacements[i].direction.normalized();
+    double sum = 0;
+    for (int n : monitor_nodes_[i]) sum += s[n].u.dot(e);
+    m[static_cast<Eigen::Index>(i) + 1] = sum / static_cast<double>(monitor_nodes_[i].size());
+  }
+  return m;
+}
+
+}  // namespace si
