@@ -197,9 +197,12 @@ std::vector<StudyCase> expand_study(const StudyFile& study, bool quick) {
       described += (described.empty() ? "" : ", ") + key + " = " + text_of(v);
     }
     if (quick)  // last: a smoke test overrides the varied keys too (e.g. a coarser mesh)
-      for (const KeyValue& kv : study.quick)
+      for (const KeyValue& kv : study.quick) {
         set_dotted_key(node, kv.key, kv.value,
                        Where{study.file, "quick." + kv.key, text_of(kv.value), line_of(kv.value)});
+        for (auto& [key, value] : chosen)
+          if (key == kv.key) value = text_of(kv.value);  // the table shows what was run
+      }
     char number[16];
     std::snprintf(number, sizeof number, "%03d", index);
     const std::string label = study.file + " case " + std::to_string(index) +

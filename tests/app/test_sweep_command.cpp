@@ -47,7 +47,8 @@ TEST(SweepCommand, PaperLayupsQuickRunsAllEightCasesAndFitsTheContactLaw) {
   const CsvTable t = read_csv_table((dir / "sweep.csv").string());
   ASSERT_EQ(t.rows.size(), 8u);
   const int status = t.column_index("status");
-  for (const auto& row : t.rows) EXPECT_EQ(row[status], "completed") << r.output;
+  for (const auto& row : t.rows)  // a pseudo-arclength path that reaches depth_max: reached_bound
+    EXPECT_TRUE(row[status] == "completed" || row[status] == "reached_bound") << row[status];
   for (double c1 : t.numeric_column("C1")) EXPECT_GT(c1, 0.0);
   EXPECT_TRUE(fs::exists(dir / "sweep.json"));
   EXPECT_TRUE(fs::exists(dir / "cases" / "002_15_-15_2S" / "path.csv"));
@@ -67,7 +68,7 @@ TEST(SweepCommand, RerunSkipsFinishedCasesAndMatchesASequentialRun) {
   EXPECT_EQ(count(again.output, "already done, skipped"), 1) << again.output;
   EXPECT_TRUE(contains(again.output, "case 1 (laminate.layup = [0/0]2S): already done"))
       << again.output;
-  EXPECT_TRUE(contains(again.output, "case 2 (laminate.layup = [0/90]2S): completed"))
+  EXPECT_TRUE(contains(again.output, "case 2 (laminate.layup = [0/90]2S): reached_bound"))
       << again.output;
   ASSERT_EQ(run_cli(args + "-j 1 --out '" + sequential + "'").exit_code, 0);
   EXPECT_EQ(read_file(fs::path(parallel) / "sweep.csv"),

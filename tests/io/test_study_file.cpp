@@ -84,6 +84,7 @@ TEST(StudyFile, QuickKeysOverrideTheVariedOnesOnlyWhenAsked) {
   EXPECT_DOUBLE_EQ(expand_study(s, false)[0].case_file.mesh.size_apex, 1.0);
   EXPECT_DOUBLE_EQ(expand_study(s, true)[0].case_file.mesh.size_apex, 2.0);
   EXPECT_DOUBLE_EQ(expand_study(s, true)[0].case_file.path.depth_max, 1.0);
+  EXPECT_EQ(expand_study(s, true)[0].values[0].second, "2 mm");  // the value that was run
 }
 
 TEST(StudyFile, UnknownDottedKeyNamesTheStudyAndTheKey) {
