@@ -23,7 +23,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 def theta_of(layup):
     """theta of "[theta/-theta]2S", else None."""
-    m = re.fullmatch(r"\[(\d+)/-(\d+)\]2S", layup.strip())
+    m = re.fullmatch(r"\[(\d+)/-?(\d+)\]2S", layup.strip())  # [0/0]2S is theta = 0
     return float(m.group(1)) if m and m.group(1) == m.group(2) else None
 
 
