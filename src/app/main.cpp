@@ -10,6 +10,7 @@
 #include "app/run_command.hpp"
 #include "app/section_command.hpp"
 #include "app/static_command.hpp"
+#include "app/sweep_command.hpp"
 #include "core/blas_threads.hpp"
 #include "core/error.hpp"
 
@@ -57,6 +58,18 @@ constexpr const char* kRunHelp =
     "Examples:\n"
     "  shellindent run                                   (the paper's cap, results/paper_cap/)\n"
     "  shellindent run studies/paper_cap.yaml --out results/cap_0_90";
+
+constexpr const char* kSweepHelp =
+    "Parameter study: every case of a study file (a base case file and the keys to vary, as "
+    "product or zip) run as `shellindent run` would, each in DIR/cases/NNN_<values>/, at most -j "
+    "at once as child processes. Finished cases are not run again, so a killed sweep resumes. "
+    "Prints a line per finished case to stderr and the merged table to stdout; writes "
+    "DIR/sweep.csv and sweep.json (per case: status, force at depth_max, force maximum, end "
+    "energy, critical-force events, and with fit: C1, C2 of T = C1 h^C2 with 95% intervals). "
+    "Exit 1 if a case failed. See docs/sweeps.md.\n"
+    "Examples:\n"
+    "  shellindent sweep studies/paper_layups.yaml -j 2\n"
+    "  shellindent sweep studies/paper_layups.yaml --quick --out /tmp/quick";
 
 constexpr const char* kFitHelp =
     "Fit a curve to two columns of a CSV file (header line required): y = C1 x^C2 fitted in linear "
@@ -122,6 +135,16 @@ int run(int argc, char** argv) {
   run_cmd->add_flag("--resume", ro.resume,
                     "continue a stopped continuation run from the checkpoint in the output "
                     "directory (the points before it are kept)");
+  si::SweepCommandOptions swo;
+  auto* sweep_cmd = app.add_subcommand("sweep", kSweepHelp);
+  sweep_cmd->add_option("study", swo.study_file, "YAML study file (docs/sweeps.md)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  sweep_cmd->add_option("-j,--jobs", swo.jobs, "cases run at once (one thread each)")
+      ->capture_default_str();
+  sweep_cmd->add_option("--out", swo.out_dir, "output directory (default: results/<name>)");
+  sweep_cmd->add_flag("--quick", swo.quick,
+                      "apply the study's quick: keys (coarse smoke test of the study)");
   si::FitCommandOptions fo;
   auto* fit_cmd = app.add_subcommand("fit", kFitHelp);
   fit_cmd->add_option("data", fo.data_file, "CSV file with a header line")
@@ -170,6 +193,7 @@ int run(int argc, char** argv) {
   if (*section) return si::run_section_command(so, std::cout);
   if (*static_cmd) return si::run_static_command(sto, std::cout, std::cerr);
   if (*run_cmd) return si::run_run_command(ro, std::cout, std::cerr);
+  if (*sweep_cmd) return si::run_sweep_command(swo, std::cout, std::cerr);
   if (*fit_cmd) return si::run_fit_command(fo, std::cout, std::cerr);
   if (*materials) return si::run_materials_command(std::cout);
   if (*layup) return si::run_layup_command(notation, std::cout);

@@ -1,0 +1,91 @@
+// End-to-end tests of `shellindent sweep`: the paper's lay-up study in its quick mode, resuming a
+// sweep whose case lost its results (only that case runs again; the table equals a sequential
+// run's) and bad input refused before anything runs.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_test_support.hpp"
+#include "io/csv_table.hpp"
+
+namespace si {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::contains;
+using testing::fresh_dir;
+using testing::read_file;
+using testing::run_cli;
+
+const std::string kStudies = std::string(SHELLINDENT_SOURCE_DIR) + "/studies";
+
+// Occurrences of `part` in `text`.
+int count(const std::string& text, const std::string& part) {
+  int n = 0;
+  for (auto p = text.find(part); p != std::string::npos; p = text.find(part, p + 1)) ++n;
+  return n;
+}
+
+// A two-case study of the paper's cap, small enough for a unit test in its quick mode.
+fs::path two_case_study(const fs::path& dir) {
+  const fs::path p = dir / "two.yaml";
+  std::ofstream(p) << "base: " << kStudies << "/paper_cap.yaml\n"
+                   << "vary: {laminate.layup: [\"[0/0]2S\", \"[0/90]2S\"]}\n"
+                      "quick: {mesh.size_apex: 3 mm, mesh.size_edge: 5 mm, path.depth_max: 0.5 mm,"
+                      " output.vtu_every: 0}\n";
+  return p;
+}
+
+TEST(SweepCommand, PaperLayupsQuickRunsAllEightCasesAndFitsTheContactLaw) {
+  const fs::path dir = fresh_dir("sweep_paper_quick");
+  const auto r = run_cli("sweep '" + kStudies + "/paper_layups.yaml' --quick -j 2 --out '" +
+                         dir.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const CsvTable t = read_csv_table((dir / "sweep.csv").string());
+  ASSERT_EQ(t.rows.size(), 8u);
+  const int status = t.column_index("status");
+  for (const auto& row : t.rows)  // a pseudo-arclength path that reaches depth_max: reached_bound
+    EXPECT_TRUE(row[status] == "completed" || row[status] == "reached_bound") << row[status];
+  for (double c1 : t.numeric_column("C1")) EXPECT_GT(c1, 0.0);
+  EXPECT_TRUE(fs::exists(dir / "sweep.json"));
+  EXPECT_TRUE(fs::exists(dir / "cases" / "002_15_-15_2S" / "path.csv"));
+  EXPECT_TRUE(contains(r.output, "8/8")) << r.output;
+}
+
+TEST(SweepCommand, RerunSkipsFinishedCasesAndMatchesASequentialRun) {
+  const fs::path dir = fresh_dir("sweep_resume");
+  const fs::path study = two_case_study(dir);
+  const std::string parallel = (dir / "parallel").string();
+  const std::string sequential = (dir / "sequential").string();
+  const std::string args = "sweep '" + study.string() + "' --quick ";
+  ASSERT_EQ(run_cli(args + "-j 2 --out '" + parallel + "'").exit_code, 0);
+  fs::remove(fs::path(parallel) / "cases" / "002_0_90_2S" / "path.json");
+  const auto again = run_cli(args + "-j 2 --out '" + parallel + "'");
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(count(again.output, "already done, skipped"), 1) << again.output;
+  EXPECT_TRUE(contains(again.output, "case 1 (laminate.layup = [0/0]2S): already done"))
+      << again.output;
+  EXPECT_TRUE(contains(again.output, "case 2 (laminate.layup = [0/90]2S): reached_bound"))
+      << again.output;
+  ASSERT_EQ(run_cli(args + "-j 1 --out '" + sequential + "'").exit_code, 0);
+  EXPECT_EQ(read_file(fs::path(parallel) / "sweep.csv"),
+            read_file(fs::path(sequential) / "sweep.csv"));
+}
+
+TEST(SweepCommand, UnknownKeyIsRefusedBeforeAnythingRuns) {
+  const fs::path dir = fresh_dir("sweep_bad_key");
+  const fs::path study = dir / "bad.yaml";
+  std::ofstream(study) << "base: " << kStudies << "/paper_cap.yaml\n"
+                       << "vary: {mesh.size_apexx: [1 mm, 2 mm]}\n";
+  const auto r = run_cli("sweep '" + study.string() + "' --out '" + (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "bad.yaml case 1")) << r.output;
+  EXPECT_TRUE(contains(r.output, "mesh.size_apexx")) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out" / "cases"));
+}
+
+}  // namespace
+}  // namespace si
