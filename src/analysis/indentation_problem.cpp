@@ -49,8 +49,8 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
       options_(std::move(options)),
       dofs_(make_dof_map(model.mesh, model.supports)),
       assembler_(model.mesh, dofs_, *model.element, model.law, model.kinematics, options_.threads),
-      assembly_(assembler_.make_assembly()),
-      chart_(model.mesh, dofs_) {
+      chart_(model.mesh, dofs_),
+      shell_(assembler_, chart_) {
   const Mesh& mesh = model.mesh;
   const int nn = mesh.num_nodes();
   geometry_.resize(nn);
@@ -107,22 +107,19 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
     v.erase(std::unique(v.begin(), v.end()), v.end());
   }
 
-  // The reference tangent: kappa, and K itself for linear kinematics.
-  assembler_.assemble(reference_state(mesh), ElementRequest{true, true}, assembly_);
+  // The reference tangent: kappa, the Jacobian's pattern, and K itself for linear kinematics.
+  reference_tangent_ = shell_.at(Eigen::VectorXd::Zero(chart_.size())).tangent;
   const int apex = model.apex_node();
   Matrix3d Ka = Matrix3d::Zero();
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
       const int ei = dofs_.equation(DofMap::dof(apex, i)),
                 ej = dofs_.equation(DofMap::dof(apex, j));
-      if (ei >= 0 && ej >= 0) Ka(i, j) = assembly_.tangent.coeff(ei, ej);
+      if (ei >= 0 && ej >= 0) Ka(i, j) = reference_tangent_.coeff(ei, ej);
     }
   kappa_ = direction_.dot(Ka * direction_);
   SI_REQUIRE(kappa_ > 0, "indentation: the apex has no stiffness along the direction of travel");
-  if (model.kinematics == Kinematics::kLinear) {
-    linear_tangent_ = assembly_.tangent;
-    build_reaction_row();
-  }
+  if (model.kinematics == Kinematics::kLinear) build_reaction_row();
 
   choose_candidates(reachable);
 }
@@ -143,7 +140,7 @@ void IndentationProblem::restore_candidates(const std::vector<int>& nodes) {
 
 void IndentationProblem::build_pattern() {
   const int nf = chart_.size(), nc = static_cast<int>(candidates_.size());
-  const SparseMatrix& K = assembly_.tangent;
+  const SparseMatrix& K = reference_tangent_;  // the shell's pattern
   std::vector<Eigen::Triplet<double, int>> t;
   t.reserve(K.nonZeros() + 36 * nc);
   for (int j = 0; j < K.outerSize(); ++j)
@@ -181,8 +178,7 @@ void IndentationProblem::build_pattern() {
     }
     s.diagonal = value_slot(jacobian_, m, m);
   }
-  solver_ = make_linear_solver(options_.linear_solver);
-  analyzed_ = false;
+  solver_ = make_linear_solver(options_.linear_solver);  // analyses the new pattern
 }
 
 int IndentationProblem::size() const {
@@ -231,38 +227,37 @@ NodeGap IndentationProblem::gap(int i, const std::vector<NodeState>& s, double h
   return g;
 }
 
-// r_free = r(x) - sum lambda_i G_i on the free dofs; the assembly (and its tangent if asked)
-// is left in assembly_ (nonlinear kinematics).
-void IndentationProblem::shell_terms(const cont::Vector& z, double h, cont::Vector& r_free) {
+// r_free = r(x) - sum lambda_i G_i on the free dofs; returns the node states at z. Nonlinear
+// kinematics: the force and tangent at x stay in shell_ for factorize().
+const std::vector<NodeState>& IndentationProblem::shell_terms(const cont::Vector& z, double h,
+                                                              cont::Vector& r_free) {
   const int nf = chart_.size();
-  chart_.states(z.head(nf), 1.0, scratch_states_);
-  if (model_.kinematics == Kinematics::kLinear) {
-    r_free = linear_tangent_ * z.head(nf);
+  const cont::Vector x = z.head(nf);
+  const bool linear = model_.kinematics == Kinematics::kLinear;
+  if (linear) {
+    chart_.states(x, 1.0, linear_states_);
+    r_free = reference_tangent_ * x;
   } else {
-    // The tangent is assembled with every residual: KINSOL asks for the Jacobian at the point
-    // of its last residual, and one force+tangent assembly costs less than two.
-    if (assembled_x_.size() != nf || assembled_x_ != z.head(nf)) {
-      assembled_x_.resize(0);  // invalid while assembling (an element may throw)
-      assembler_.assemble(scratch_states_, ElementRequest{true, true}, assembly_);
-      assembled_x_ = z.head(nf);
-    }
-    r_free = dofs_.restrict_to_free(assembly_.internal_force);
+    r_free = dofs_.restrict_to_free(shell_.at(x).internal_force);
   }
+  const std::vector<NodeState>& states = linear ? linear_states_ : shell_.states();
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const double lambda = z[nf + static_cast<int>(i)];
     if (lambda == 0.0) continue;
-    const NodeGap g = gap(static_cast<int>(i), scratch_states_, h, false);
+    const NodeGap g = gap(static_cast<int>(i), states, h, false);
     for (int l = 0; l < 5; ++l)
       if (slots_[i].eq[l] >= 0) r_free[slots_[i].eq[l]] -= lambda * g.gradient[l];
   }
+  return states;
 }
 
 bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector& F) {
   ++counters_.residuals;
   const int nf = chart_.size();
   cont::Vector r;
+  const std::vector<NodeState>* states = nullptr;
   try {
-    shell_terms(z, h, r);
+    states = &shell_terms(z, h, r);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
@@ -270,7 +265,7 @@ bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector&
   F.resize(size());
   F.head(nf) = r;
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    const NodeGap g = gap(static_cast<int>(i), scratch_states_, h, false);
+    const NodeGap g = gap(static_cast<int>(i), *states, h, false);
     F[nf + static_cast<int>(i)] =
         ncp(options_.ncp, z[nf + static_cast<int>(i)], kappa_ * g.gap).value;
   }
@@ -281,21 +276,21 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   ++counters_.factorizations;
   const int nf = chart_.size();
   cont::Vector r_free;
+  const std::vector<NodeState>* states = nullptr;
   try {
-    shell_terms(z, h, r_free);
+    states = &shell_terms(z, h, r_free);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
   }
-  const SparseMatrix& K =
-      model_.kinematics == Kinematics::kLinear ? linear_tangent_ : assembly_.tangent;
+  const bool nonlinear = model_.kinematics == Kinematics::kNonlinear;
+  const SparseMatrix& K = nonlinear ? shell_.at(z.head(nf)).tangent : reference_tangent_;
   double* J = jacobian_.valuePtr();
   std::fill(J, J + jacobian_.nonZeros(), 0.0);
   for (int k = 0; k < K.nonZeros(); ++k) J[k_to_j_[k]] = K.valuePtr()[k];
-  const bool nonlinear = model_.kinematics == Kinematics::kNonlinear;
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const double lambda = z[nf + static_cast<int>(i)];
-    const NodeGap g = gap(static_cast<int>(i), scratch_states_, h, nonlinear && lambda != 0.0);
+    const NodeGap g = gap(static_cast<int>(i), *states, h, nonlinear && lambda != 0.0);
     const NcpValue phi = ncp(options_.ncp, lambda, kappa_ * g.gap);
     const CandidateSlots& s = slots_[i];
     for (int r = 0; r < 5; ++r) {
@@ -310,11 +305,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   }
   if (nonlinear) chart_.to_chart_jacobian(z.head(nf), r_free, jacobian_);
   try {
-    if (!analyzed_) {
-      solver_->analyze(jacobian_);
-      analyzed_ = true;
-    }
-    solver_->factorize(jacobian_);
+    solver_->factorize(jacobian_);  // the first factorization analyses the pattern
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
@@ -501,17 +492,14 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   Vector3d total = Vector3d::Zero();  // sum of the support reactions (internal force there)
   if (model_.kinematics == Kinematics::kLinear) {
     const cont::Vector x = z.head(nf);
-    out.energy = sym * 0.5 * x.dot(linear_tangent_ * x);
+    out.energy = sym * 0.5 * x.dot(reference_tangent_ * x);
     out.reaction = -sym * reaction_row_.dot(x);
   } else {
-    // Converged points are where the last residual was assembled: reuse it.
-    if (assembled_x_.size() != nf || assembled_x_ != z.head(nf)) {
-      assembled_x_.resize(0);  // the tangent in assembly_ is stale from here on
-      assembler_.assemble(s, ElementRequest{true, false}, assembly_);
-    }
-    out.energy = sym * assembly_.energy;
+    // Converged points are where the last residual was assembled: usually cached.
+    const Assembly& a = shell_.force_at(z.head(nf));
+    out.energy = sym * a.energy;
     for (int dof : dofs_.prescribed_dofs())
-      if (dof % kShellNodeDofs < 3) total[dof % kShellNodeDofs] += assembly_.internal_force[dof];
+      if (dof % kShellNodeDofs < 3) total[dof % kShellNodeDofs] += a.internal_force[dof];
     out.reaction = -sym * total.dot(direction_);
   }
 

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/chart_assembly.hpp"
 #include "analysis/shell_model.hpp"
 #include "contact/indenter.hpp"
 #include "contact/ncp_function.hpp"
@@ -113,7 +114,7 @@ class IndentationProblem : public cont::Problem {
   // Linear kinematics only (the fast path, linear_indentation.hpp): the reference tangent K
   // (free dofs), the candidates' gap gradients C (one row per candidate, free-dof columns) and
   // the gaps at h = 0 of the undeformed shell, g0 (mm); then g = g0 - h + C x.
-  const SparseMatrix& linear_tangent() const { return linear_tangent_; }
+  const SparseMatrix& linear_tangent() const { return reference_tangent_; }
   SparseMatrix contact_matrix() const;
   Eigen::VectorXd reference_gaps() const;
   IndentationState evaluate(const cont::Vector& z, double h);
@@ -127,7 +128,7 @@ class IndentationProblem : public cont::Problem {
   void choose_candidates(const std::vector<int>& nodes);
   void build_pattern();
   NodeGap gap(int i, const std::vector<NodeState>& s, double h, bool derivative) const;
-  void shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
+  const std::vector<NodeState>& shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
   void build_reaction_row();
   void kinematic_quantities(const cont::Vector& z, const std::vector<NodeState>& s,
                             IndentationState& out) const;
@@ -138,12 +139,14 @@ class IndentationProblem : public cont::Problem {
   IndentationOptions options_;
   DofMap dofs_;
   Assembler assembler_;
-  Assembly assembly_;
   ShellChart chart_;
-  SparseMatrix linear_tangent_;   // linear kinematics: K at the reference state
-  Eigen::VectorXd reaction_row_;  // linear kinematics: support reaction along e = r_e . x
-  double t0_ = 0;                 // first touch travel
-  double kappa_ = 1;              // N/mm
+  ChartAssembly shell_;  // nonlinear kinematics: force and tangent at the last x
+  // K at the reference state: the Jacobian's pattern, and the tangent of linear kinematics.
+  SparseMatrix reference_tangent_;
+  std::vector<NodeState> linear_states_;  // linear kinematics: node states at the last x
+  Eigen::VectorXd reaction_row_;          // linear kinematics: support reaction along e = r_e . x
+  double t0_ = 0;                         // first touch travel
+  double kappa_ = 1;                      // N/mm
   std::vector<int> candidates_;
   std::vector<NodeContactGeometry> geometry_;  // per mesh node
   std::vector<double> tributary_area_;         // per mesh node, mm^2
@@ -155,11 +158,6 @@ class IndentationProblem : public cont::Problem {
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
   std::vector<CandidateSlots> slots_;
   std::unique_ptr<LinearSolver> solver_;
-  bool analyzed_ = false;
-  std::vector<NodeState> scratch_states_;
-  // Nonlinear kinematics: the shell coordinates of the last assembly (force and tangent); a
-  // factorize() at the point of the last residual() (KINSOL's pattern) reuses it.
-  cont::Vector assembled_x_;
   IndentationCounters counters_;
   // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.
   cont::Vector cached_z_;

@@ -10,8 +10,8 @@ LoadProblem::LoadProblem(const Mesh& mesh, const std::vector<Support>& supports,
     : options_(std::move(options)),
       dofs_(make_dof_map(mesh, supports)),
       assembler_(mesh, dofs_, element, law, Kinematics::kNonlinear, options_.threads),
-      assembly_(assembler_.make_assembly()),
       chart_(mesh, dofs_),
+      shell_(assembler_, chart_),
       solver_(make_linear_solver(options_.linear_solver)) {
   validate(mesh, loads);
   SI_REQUIRE(!loads.has_follower(), "LoadProblem: follower pressures are not supported");
@@ -36,19 +36,9 @@ std::vector<NodeState> LoadProblem::node_states(const cont::Vector& x) const {
   return s;
 }
 
-void LoadProblem::internal_force(const cont::Vector& x, Eigen::VectorXd& f_free) {
-  if (assembled_x_.size() != x.size() || assembled_x_ != x) {
-    assembled_x_.resize(0);  // invalid while assembling (an element may throw)
-    chart_.states(x, 1.0, scratch_states_);
-    assembler_.assemble(scratch_states_, ElementRequest{true, true}, assembly_);
-    assembled_x_ = x;
-  }
-  f_free = dofs_.restrict_to_free(assembly_.internal_force);
-}
-
 bool LoadProblem::residual(const cont::Vector& x, double lambda, cont::Vector& F) {
   try {
-    internal_force(x, F);
+    F = dofs_.restrict_to_free(shell_.at(x).internal_force);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
@@ -58,17 +48,12 @@ bool LoadProblem::residual(const cont::Vector& x, double lambda, cont::Vector& F
 }
 
 bool LoadProblem::factorize(const cont::Vector& x, double lambda) {
-  cont::Vector r;
   try {
-    internal_force(x, r);
-    r -= lambda * load_;
-    jacobian_ = assembly_.tangent;
+    const Assembly& a = shell_.at(x);
+    const cont::Vector r = dofs_.restrict_to_free(a.internal_force) - lambda * load_;
+    jacobian_ = a.tangent;
     chart_.to_chart_jacobian(x, r, jacobian_);
-    if (!analyzed_) {
-      solver_->analyze(jacobian_);
-      analyzed_ = true;
-    }
-    solver_->factorize(jacobian_);
+    solver_->factorize(jacobian_);  // the first factorization analyses the pattern
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/chart_assembly.hpp"
 #include "continuation/problem.hpp"
 #include "model/assembler.hpp"
 #include "model/dof_map.hpp"
@@ -67,22 +68,15 @@ class LoadProblem : public cont::Problem {
   const Eigen::VectorXd& load_vector() const { return load_; }
 
  private:
-  // f_int at x on the free dofs, with the tangent assembled alongside (KINSOL asks for the
-  // Jacobian at the point of its last residual: one force+tangent assembly costs less than two).
-  void internal_force(const cont::Vector& x, Eigen::VectorXd& f_free);
-
   LoadProblemOptions options_;
   DofMap dofs_;
   Assembler assembler_;
-  Assembly assembly_;
   ShellChart chart_;
+  ChartAssembly shell_;                          // force and tangent at the last x
   Eigen::VectorXd load_;                         // free dofs
   std::vector<std::vector<int>> monitor_nodes_;  // per displacement monitor
   SparseMatrix jacobian_;
   std::unique_ptr<LinearSolver> solver_;
-  bool analyzed_ = false;
-  cont::Vector assembled_x_;  // chart point of the last assembly (empty = none valid)
-  std::vector<NodeState> scratch_states_;
 };
 
 }  // namespace si
