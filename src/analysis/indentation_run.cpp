@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "analysis/active_set_solver.hpp"
@@ -65,28 +66,31 @@ void finish(PathResult& r, bool completed, const std::string& status, const std:
   r.reason = reason;
 }
 
-// Linear kinematics: each depth of the grid independently, by the fast path.
-PathResult run_linear(IndentationSetup& s, const PathCallback& callback) {
+// Solves the problem at depth h into z (the previous depth's solution on entry); returns why it
+// failed, empty on success, and the iterations it took.
+using DepthSolve = std::function<std::string(double h, cont::Vector& z, int& iterations)>;
+
+// The depth grid, one solve per depth, from the undeformed start.
+PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback,
+                          const std::string& method, const DepthSolve& solve) {
   PathResult r;
-  r.method = "linear fast path";
+  r.method = method;
   r.monitor_names = s.problem->monitor_names();
   PathRecorder rec(r, callback);
-  LinearIndentation fast(*s.problem);
-  if (!rec.add(*s.problem, s.problem->initial_point(), 0.0, 0, 0.0)) {
+  cont::Vector z = s.problem->initial_point();
+  if (!rec.add(*s.problem, z, 0.0, 0, 0.0)) {
     finish(r, false, "stopped", "stopped by the user");
     return r;
   }
   double previous = 0;
   for (double h : depth_grid(s.case_file.path)) {
-    cont::Vector z;
-    try {
-      z = fast.solve(h);
-    } catch (const Error& e) {
-      if (e.kind() != ErrorKind::kNumerical) throw;
-      finish(r, false, "failed", "depth " + std::to_string(h) + " mm: " + e.reason());
+    int iterations = 0;
+    const std::string failure = solve(h, z, iterations);
+    if (!failure.empty()) {
+      finish(r, false, "failed", "depth " + std::to_string(h) + " mm: " + failure);
       return r;
     }
-    if (!rec.add(*s.problem, z, h, fast.last_iterations(), h - previous)) {
+    if (!rec.add(*s.problem, z, h, iterations, h - previous)) {
       finish(r, false, "stopped", "stopped by the user");
       return r;
     }
@@ -96,40 +100,34 @@ PathResult run_linear(IndentationSetup& s, const PathCallback& callback) {
   return r;
 }
 
-// contact.solver active_set: the primal-dual active-set method at each depth of the grid.
+// Linear kinematics: each depth of the grid independently, by the fast path.
+PathResult run_linear(IndentationSetup& s, const PathCallback& callback) {
+  LinearIndentation fast(*s.problem);
+  return run_depth_grid(s, callback, "linear fast path",
+                        [&](double h, cont::Vector& z, int& iterations) -> std::string {
+                          try {
+                            z = fast.solve(h);
+                          } catch (const Error& e) {
+                            if (e.kind() != ErrorKind::kNumerical) throw;
+                            return e.reason();
+                          }
+                          iterations = fast.last_iterations();
+                          return "";
+                        });
+}
+
+// contact.solver active_set: the primal-dual active-set method at each depth of the grid,
+// solved again while the candidate set grows (as the continuation library does).
 PathResult run_active_set(IndentationSetup& s, const PathCallback& callback) {
-  PathResult r;
-  r.method = "active_set";
-  r.monitor_names = s.problem->monitor_names();
-  PathRecorder rec(r, callback);
   IndentationProblem& p = *s.problem;
-  cont::Vector z = p.initial_point();
-  if (!rec.add(p, z, 0.0, 0, 0.0)) {
-    finish(r, false, "stopped", "stopped by the user");
-    return r;
-  }
-  double previous = 0;
-  for (double h : depth_grid(s.case_file.path)) {
-    const ActiveSetResult a = solve_active_set(p, z, h, 1e-10 * p.force_scale(z));
-    if (!a.converged) {
-      finish(r, false, "failed", "depth " + std::to_string(h) + " mm: " + a.reason);
-      return r;
-    }
-    if (p.adapt(z, h)) {  // contact reached the edge of the candidate set: solve again
-      const ActiveSetResult again = solve_active_set(p, z, h, 1e-10 * p.force_scale(z));
-      if (!again.converged) {
-        finish(r, false, "failed", "depth " + std::to_string(h) + " mm: " + again.reason);
-        return r;
-      }
-    }
-    if (!rec.add(p, z, h, a.iterations, h - previous)) {
-      finish(r, false, "stopped", "stopped by the user");
-      return r;
-    }
-    previous = h;
-  }
-  finish(r, true, "completed", "");
-  return r;
+  return run_depth_grid(s, callback, "active_set",
+                        [&](double h, cont::Vector& z, int& iterations) -> std::string {
+                          ActiveSetResult a = solve_active_set(p, z, h, 1e-10 * p.force_scale(z));
+                          iterations = a.iterations;
+                          for (int round = 0; a.converged && round < 10 && p.adapt(z, h); ++round)
+                            a = solve_active_set(p, z, h, 1e-10 * p.force_scale(z));
+                          return a.converged ? "" : a.reason;
+                        });
 }
 
 cont::Settings continuation_settings(const IndentationSetup& s) {

@@ -1,0 +1,39 @@
+// The shell's internal force and tangent at chart coordinates x (model/shell_chart.hpp),
+// assembled at most once per x. KINSOL asks for the Jacobian at the point of its last residual,
+// and one force + tangent assembly costs less than a force assembly followed by a second one
+// with the tangent. Shared by the continuation problems of src/analysis (indentation, load).
+#pragma once
+
+#include <vector>
+
+#include "model/assembler.hpp"
+#include "model/shell_chart.hpp"
+
+namespace si {
+
+class ChartAssembly {
+ public:
+  // Keeps references to the assembler and the chart (same mesh and dof map).
+  ChartAssembly(const Assembler& assembler, const ShellChart& chart);
+
+  // Force and tangent at x; reused if the last assembly was at x. An element's error
+  // propagates and leaves nothing cached.
+  const Assembly& at(const Eigen::VectorXd& x);
+  // Force and energy at x, the tangent only if the cache already holds x (output of a point
+  // that is not where the solver stood).
+  const Assembly& force_at(const Eigen::VectorXd& x);
+  // Node states of the last at() / force_at().
+  const std::vector<NodeState>& states() const { return states_; }
+
+ private:
+  const Assembly& assemble(const Eigen::VectorXd& x, bool tangent);
+
+  const Assembler& assembler_;
+  const ShellChart& chart_;
+  Assembly assembly_;
+  std::vector<NodeState> states_;
+  Eigen::VectorXd x_;  // chart point of the cached assembly (empty: none)
+  bool has_tangent_ = false;
+};
+
+}  // namespace si
