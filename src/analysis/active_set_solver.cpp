@@ -10,7 +10,6 @@ ActiveSetResult solve_active_set(IndentationProblem& problem, cont::Vector& z, d
                                  double tolerance, int max_iterations) {
   ActiveSetResult out;
   cont::Vector F;
-  std::vector<int> previous_set;
   for (int k = 0;; ++k) {
     if (!problem.residual(z, h, F)) {
       out.reason = "the residual cannot be evaluated (an element inverted?)";
@@ -18,8 +17,10 @@ ActiveSetResult solve_active_set(IndentationProblem& problem, cont::Vector& z, d
     }
     const double norm = F.lpNorm<Eigen::Infinity>();
     out.residual_norms.push_back(norm);
-    const std::vector<int> set = problem.signature(z, h);
-    if (norm <= tolerance && (k > 0 && set == previous_set)) {
+    // The residual of the min function is zero exactly at a KKT point, so a small residual is
+    // the test. Requiring the active set to repeat as well never ends when a node sits at the
+    // tie lambda = kappa g: it flips at round-off (measured: residual 2e-9, set alternating).
+    if (norm <= tolerance) {
       out.converged = true;
       out.iterations = k;
       return out;
@@ -29,7 +30,6 @@ ActiveSetResult solve_active_set(IndentationProblem& problem, cont::Vector& z, d
       out.reason = "no convergence in " + std::to_string(k) + " active-set iterations";
       return out;
     }
-    previous_set = set;
     if (!problem.factorize(z, h)) {
       out.reason = "the Newton matrix is singular";
       return out;

@@ -3,7 +3,7 @@
 // the complementarity system written with the min function (contact/ncp_function.hpp). A node
 // is active (its gap row is enforced) where lambda_i > kappa g_i; each iteration solves the
 // Newton system for that active set. Own code throughout: no KINSOL, no line search. It
-// terminates when the active set repeats and the residual is below the tolerance.
+// stops when the residual is below the tolerance.
 //
 // It needs an IndentationProblem built with NcpFunction::kMin.
 #pragma once

@@ -120,14 +120,17 @@ PathResult run_linear(IndentationSetup& s, const PathCallback& callback) {
 // solved again while the candidate set grows (as the continuation library does).
 PathResult run_active_set(IndentationSetup& s, const PathCallback& callback) {
   IndentationProblem& p = *s.problem;
-  return run_depth_grid(s, callback, "active_set",
-                        [&](double h, cont::Vector& z, int& iterations) -> std::string {
-                          ActiveSetResult a = solve_active_set(p, z, h, 1e-10 * p.force_scale(z));
-                          iterations = a.iterations;
-                          for (int round = 0; a.converged && round < 10 && p.adapt(z, h); ++round)
-                            a = solve_active_set(p, z, h, 1e-10 * p.force_scale(z));
-                          return a.converged ? "" : a.reason;
-                        });
+  return run_depth_grid(
+      s, callback, "active_set", [&](double h, cont::Vector& z, int& iterations) -> std::string {
+        // Tolerance: 1e-10 of the force a gap of h would carry, as for
+        // KINSOL (the force at the start, zero, is no scale).
+        const double tol = 1e-10 * std::max(p.force_scale(z), p.stiffness_scale() * h);
+        ActiveSetResult a = solve_active_set(p, z, h, tol);
+        iterations = a.iterations;
+        for (int round = 0; a.converged && round < 10 && p.adapt(z, h); ++round)
+          a = solve_active_set(p, z, h, tol);
+        return a.converged ? "" : a.reason;
+      });
 }
 
 cont::Settings continuation_settings(const IndentationSetup& s) {

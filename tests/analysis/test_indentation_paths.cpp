@@ -3,6 +3,8 @@
 // both must give the same solution there, to the corrector tolerance.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "analysis/indentation_run.hpp"
 #include "indentation_test_support.hpp"
 
@@ -42,6 +44,33 @@ TEST(IndentationPaths, NaturalAndPseudoArclengthAgreeOnTheCap_0_90_2S) {
     EXPECT_NEAR(x.energy, y.energy, 1e-8 * (1 + x.energy)) << x.depth;
   }
   EXPECT_GT(a.points.back().state.force, 0.0);
+}
+
+}  // namespace
+}  // namespace si
+
+namespace si {
+namespace {
+
+// contact.solver active_set (the primal-dual active-set method on the depth grid, from the
+// undeformed start) against the KINSOL natural path of the same case, at every grid depth.
+TEST(IndentationPaths, ActiveSetGridAgreesWithKinsol) {
+  CaseFile c = testing::coarse_cap_path_case("[0/0]2S", PathMethod::kNatural, 0.6, 0.2, 0.2);
+  IndentationSetup kinsol(c, 1);
+  const PathResult a = run_indentation_path(kinsol);
+  c.contact.solver = ContactSolver::kActiveSet;
+  IndentationSetup active_set(c, 1);
+  const PathResult b = run_indentation_path(active_set);
+  ASSERT_TRUE(b.completed) << b.reason;
+  EXPECT_EQ(b.method, "active_set");
+  for (const PathPoint& q : b.points) {
+    for (const PathPoint& p : a.points) {
+      if (std::abs(p.state.depth - q.state.depth) < 1e-12) {
+        EXPECT_NEAR(p.state.force, q.state.force, 1e-8 * (1 + p.state.force)) << p.state.depth;
+      }
+    }
+  }
+  EXPECT_EQ(b.points.size(), 4u);  // 0, 0.2, 0.4, 0.6
 }
 
 }  // namespace
