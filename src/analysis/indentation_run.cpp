@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -17,6 +16,7 @@
 #include "continuation/natural.hpp"
 #include "continuation/pseudo_arclength.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace si {
 namespace {
@@ -172,9 +172,7 @@ void write_sidecar(const std::string& checkpoint, const IndentationProblem& prob
   nlohmann::json points = nlohmann::json::array();
   for (const PathPoint& p : r.points) points.push_back(path_point_values(p));
   const nlohmann::json j = {{"candidates", problem.candidates()}, {"points", points}};
-  const std::string tmp = sidecar_path(checkpoint) + ".tmp";
-  std::ofstream(tmp) << j.dump() << "\n";
-  std::filesystem::rename(tmp, sidecar_path(checkpoint));
+  write_file_atomically(sidecar_path(checkpoint), j.dump() + "\n");
 }
 
 // Restores the candidate set and the points of a checkpointed run; returns the checkpoint.
