@@ -204,17 +204,11 @@ NodeGap IndentationProblem::gap(int i, const std::vector<NodeState>& s, double h
   const double travel = t0_ + h;
   NodeGap g;
   if (model_.kinematics == Kinematics::kLinear) {
-    Vector5d q = Vector5d::Zero();
-    for (int l = 0; l < 3; ++l) q[l] = s[n].u[l];
-    // The chart coordinates of the node (theta on the reference axes); prescribed ones are 0.
-    const NodeState ref = reference_node_state(model_.mesh.directors[n]);
-    const Vector3d axis = ref.d.cross(s[n].d);
-    const double angle = std::atan2(axis.norm(), ref.d.dot(s[n].d));
-    if (axis.norm() > 0) {
-      const Vector3d theta = axis.normalized() * angle;
-      q[3] = theta.dot(ref.v1);
-      q[4] = theta.dot(ref.v2);
-    }
+    // The node's chart coordinates (u, theta . V1, theta . V2): the linear mode's dofs.
+    const NodeState& ref = chart_.reference(n);
+    const Vector3d theta = chart_.rotation_vector(n, s[n].d);
+    Vector5d q;
+    q << s[n].u, theta.dot(ref.v1), theta.dot(ref.v2);
     g = linearized_node_gap(indenter_, direction_, geometry_[n], ref, q, travel);
   } else {
     g = node_gap(indenter_, direction_, geometry_[n], s[n], travel, touch_guess_[i], derivative);

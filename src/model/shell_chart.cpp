@@ -76,18 +76,20 @@ Eigen::VectorXd ShellChart::coordinates(const std::vector<NodeState>& state) con
       if (eq >= 0) x[eq] = state[n].u[l];
     }
   for (const NodeRotation& r : rotations_) {
-    const Vector3d& D = reference_[r.node].d;
-    const Vector3d& d = state[r.node].d;
-    const Vector3d axis = D.cross(d);
-    const double angle = std::atan2(axis.norm(), D.dot(d));
-    if (angle > M_PI - 1e-6)
-      throw_numerical("node " + std::to_string(r.node) +
-                      " has turned by pi: outside the shell chart");
-    const Vector3d th = axis.norm() > 0 ? Vector3d(axis.normalized() * angle) : Vector3d::Zero();
+    const Vector3d th = rotation_vector(r.node, state[r.node].d);
     if (r.eq_a >= 0) x[r.eq_a] = th.dot(reference_[r.node].v1);
     if (r.eq_b >= 0) x[r.eq_b] = th.dot(reference_[r.node].v2);
   }
   return x;
+}
+
+Vector3d ShellChart::rotation_vector(int node, const Vector3d& d) const {
+  const Vector3d& D = reference_[node].d;
+  const Vector3d axis = D.cross(d);
+  const double angle = std::atan2(axis.norm(), D.dot(d));
+  if (angle > M_PI - 1e-6)
+    throw_numerical("node " + std::to_string(node) + " has turned by pi: outside the shell chart");
+  return axis.norm() > 0 ? Vector3d(axis.normalized() * angle) : Vector3d::Zero();
 }
 
 void ShellChart::to_chart_jacobian(const Eigen::VectorXd& x, const Eigen::VectorXd& r,

@@ -43,6 +43,12 @@ class ShellChart {
   // ignored). Throws if a node has rotated by pi or more, or about its director.
   Eigen::VectorXd coordinates(const std::vector<NodeState>& state) const;
 
+  // The rotation vector theta (|theta| < pi, normal to D) that takes a node's reference director
+  // D to d, and its reference frame; its components on (V1, V2) are the node's chart
+  // coordinates. Throws a numerical error at a turn of pi or more.
+  Vector3d rotation_vector(int node, const Vector3d& d) const;
+  const NodeState& reference(int node) const { return reference_[node]; }
+
   // In place: K (its first num_free() columns are the shell's free dofs, in equation order; it
   // may have more rows and columns, e.g. Lagrange multipliers) becomes K T(x), then the drilling
   // term D(x, r) is added to the shell's rotation rows. r is the residual at x restricted to the
