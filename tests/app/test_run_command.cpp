@@ -130,3 +130,21 @@ TEST(RunCommand, PseudoArclengthWritesTheInterpolatedDepthGrid) {
 
 }  // namespace
 }  // namespace si
+
+namespace si {
+namespace {
+
+TEST(RunCommand, ResumeWithoutCheckpointIsRefused) {
+  const fs::path dir = fresh_dir("run_resume_missing");
+  const fs::path c = testing::write_case(
+      dir, cap_case("nonlinear", "{shape: sphere, radius: 12.7 mm}", "{depth_max: 0.2 mm}"));
+  const auto r =
+      run_cli("run '" + c.string() + "' --resume --out '" + (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "--resume")) << r.output;
+  EXPECT_TRUE(contains(r.output, "nothing to resume")) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out" / "path.csv"));
+}
+
+}  // namespace
+}  // namespace si
