@@ -5,7 +5,8 @@
 // kinematics, 100 steps under 0.05 s; nonlinear kinematics, 1e4 dofs, 100 steps under 10 s.
 // Counters: nodes, shell unknowns, contact candidates, Newton iterations per step,
 // factorizations and residuals per step, time per step. Arguments: (size_apex, size_edge) in
-// 0.01 mm, then the contact Jacobian's LU (0 = UMFPACK, 1 = KLU).
+// 0.01 mm, then the contact Jacobian's solver (0 = UMFPACK, 1 = KLU, 2 = Cholesky-preconditioned
+// GMRES, the default) and, for the nonlinear path, the depth in 0.1 mm and the assembly threads.
 // Run: cmake -S . -B build-bench -G Ninja -DSHELLINDENT_BENCH=ON -DSHELLINDENT_TESTS=OFF &&
 //      cmake --build build-bench --target bench_contact && build-bench/bench/bench_contact
 // Figures: docs/performance.md, "Contact".
@@ -45,6 +46,11 @@ void report(benchmark::State& st, const IndentationSetup& s, const PathResult& r
   st.counters["newton_per_step"] = iterations / steps;
   st.counters["factorizations_per_step"] = c.factorizations / steps;
   st.counters["residuals_per_step"] = c.residuals / steps;
+  const ContactJacobianCounters k = s.problem->solver_counters();
+  st.counters["lu_fallbacks"] = static_cast<double>(k.lu_fallbacks);
+  st.counters["choleskys_per_step"] = k.cholesky / steps;
+  st.counters["gmres_products_per_solve"] =
+      k.krylov_solves > 0 ? static_cast<double>(k.krylov_products) / k.krylov_solves : 0.0;
   st.counters["force_at_end_N"] = r.points.back().state.force;
   if (!r.completed) st.SkipWithError(("path stopped: " + r.reason).c_str());
 }
@@ -67,7 +73,9 @@ void BM_LinearPath(benchmark::State& st) {
 // 100 depths by natural continuation with the KINSOL corrector (setup included, small).
 void BM_NonlinearPath(benchmark::State& st) {
   for (auto _ : st) {
-    IndentationSetup s(paper_cap(st, "nonlinear", 10.0), 1, st.range(2) == 0 ? "umfpack" : "klu");
+    const char* solvers[] = {"umfpack", "klu", kPreconditionedKrylov};
+    IndentationSetup s(paper_cap(st, "nonlinear", st.range(3) / 10.0),
+                       static_cast<int>(st.range(4)), solvers[st.range(2)]);
     const PathResult r = run_indentation_path(s);
     st.PauseTiming();
     report(st, s, r);
@@ -85,10 +93,15 @@ BENCHMARK(si::BM_LinearPath)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
 BENCHMARK(si::BM_NonlinearPath)
-    ->Args({300, 450, 0})
-    ->Args({300, 450, 1})
-    ->Args({92, 143, 0})
-    ->Args({92, 143, 1})
+    ->Args({300, 450, 0, 100, 1})
+    ->Args({300, 450, 1, 100, 1})
+    ->Args({300, 450, 2, 100, 1})
+    ->Args({92, 143, 0, 100, 1})
+    ->Args({92, 143, 1, 100, 1})
+    ->Args({92, 143, 2, 100, 1})
+    ->Args({92, 143, 0, 20, 1})
+    ->Args({92, 143, 2, 20, 1})
+    ->Args({92, 143, 2, 100, 2})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 int main(int argc, char** argv) {

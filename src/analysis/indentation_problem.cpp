@@ -178,7 +178,11 @@ void IndentationProblem::build_pattern() {
     }
     s.diagonal = value_slot(jacobian_, m, m);
   }
-  solver_ = make_linear_solver(options_.linear_solver);  // analyses the new pattern
+  if (options_.linear_solver == kPreconditionedKrylov) {
+    if (!krylov_) krylov_ = std::make_unique<ContactJacobianSolver>(kappa_, "umfpack");
+  } else {
+    solver_ = make_linear_solver(options_.linear_solver);  // analyses the new pattern
+  }
 }
 
 int IndentationProblem::size() const {
@@ -282,11 +286,18 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   double* J = jacobian_.valuePtr();
   std::fill(J, J + jacobian_.nonZeros(), 0.0);
   for (int k = 0; k < K.nonZeros(); ++k) J[k_to_j_[k]] = K.valuePtr()[k];
+  std::vector<ContactJacobianRow> rows(krylov_ ? candidates_.size() : 0);
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const double lambda = z[nf + static_cast<int>(i)];
     const NodeGap g = gap(static_cast<int>(i), *states, h, nonlinear && lambda != 0.0);
     const NcpValue phi = ncp(options_.ncp, lambda, kappa_ * g.gap);
     const CandidateSlots& s = slots_[i];
+    if (krylov_) {
+      rows[i].eq = s.eq;
+      for (int r = 0; r < 5; ++r) rows[i].gradient[r] = g.gradient[r];
+      rows[i].a = phi.d_a;
+      rows[i].b = phi.d_b * kappa_;
+    }
     for (int r = 0; r < 5; ++r) {
       if (s.eq[r] < 0) continue;
       J[s.column[r]] -= g.gradient[r];
@@ -299,7 +310,13 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   }
   if (nonlinear) chart_.to_chart_jacobian(z.head(nf), r_free, jacobian_);
   try {
-    solver_->factorize(jacobian_);  // the first factorization analyses the pattern
+    if (krylov_)
+      krylov_->factorize(
+          jacobian_, nf,
+          nonlinear ? chart_.rotation_blocks(z.head(nf)) : std::vector<ShellChart::RotationBlock>{},
+          rows);
+    else
+      solver_->factorize(jacobian_);  // the first factorization analyses the pattern
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
@@ -309,7 +326,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
 
 bool IndentationProblem::solve(cont::Vector& b) {
   ++counters_.solves;
-  b = solver_->solve(b);
+  b = krylov_ ? krylov_->solve(b) : solver_->solve(b);
   return b.allFinite();
 }
 

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "analysis/chart_assembly.hpp"
+#include "analysis/contact_jacobian_solver.hpp"
 #include "analysis/shell_model.hpp"
 #include "contact/indenter.hpp"
 #include "contact/ncp_function.hpp"
@@ -39,12 +40,17 @@
 
 namespace si {
 
+// GMRES on the Jacobian preconditioned by a Cholesky factorization of its condensed shell block.
+inline const char* const kPreconditionedKrylov = "cholesky_gmres";
+
 struct IndentationOptions {
   double contact_offset = 0;    // c: contact face above the reference surface along d, mm
   double candidate_depth = 12;  // mm of travel past first touch (see the header)
   NcpFunction ncp = NcpFunction::kFischerBurmeister;
-  std::string linear_solver = "umfpack";  // "umfpack" | "klu" (the Jacobian is unsymmetric)
-  int threads = 0;                        // element assembly (0 = OpenMP default)
+  // The Jacobian's solver: kPreconditionedKrylov (contact_jacobian_solver.hpp; an LU of the
+  // Jacobian where it cannot help) or a direct LU, "umfpack" | "klu" (the Jacobian is unsymmetric).
+  std::string linear_solver = "cholesky_gmres";
+  int threads = 0;  // element assembly (0 = OpenMP default)
 };
 
 // Everything a user wants at one converged point (whole-shell values: symmetry applied).
@@ -120,6 +126,10 @@ class IndentationProblem : public cont::Problem {
   IndentationState evaluate(const cont::Vector& z, double h);
   const ShellModel& model() const { return model_; }
   const IndentationCounters& counters() const { return counters_; }
+  // The preconditioned Krylov solver's work (zero with a direct LU).
+  ContactJacobianCounters solver_counters() const {
+    return krylov_ ? krylov_->counters() : ContactJacobianCounters{};
+  }
   const DofMap& dofs() const { return dofs_; }
   const Assembler& assembler() const { return assembler_; }
 
@@ -157,7 +167,8 @@ class IndentationProblem : public cont::Problem {
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
   std::vector<CandidateSlots> slots_;
-  std::unique_ptr<LinearSolver> solver_;
+  std::unique_ptr<LinearSolver> solver_;           // a direct LU of the Jacobian, or
+  std::unique_ptr<ContactJacobianSolver> krylov_;  // the preconditioned Krylov solver
   IndentationCounters counters_;
   // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.
   cont::Vector cached_z_;

@@ -32,8 +32,10 @@ struct IndentationSetup {
   std::unique_ptr<IndentationProblem> problem;
 
   // Throws an input error naming the case file and key for a case that cannot run.
-  // linear_solver: the contact Jacobian's sparse LU, "umfpack" or "klu" (docs/performance.md).
-  IndentationSetup(CaseFile c, int threads, const std::string& linear_solver = "umfpack");
+  // linear_solver: the contact Jacobian's solver, "cholesky_gmres" (indentation_problem.hpp) or a
+  // sparse LU, "umfpack" or "klu" (docs/performance.md).
+  IndentationSetup(CaseFile c, int threads,
+                   const std::string& linear_solver = kPreconditionedKrylov);
 };
 
 // The indenter's pose: the case's indenter.position/direction/axis; without a position, the

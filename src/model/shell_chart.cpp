@@ -92,24 +92,46 @@ Vector3d ShellChart::rotation_vector(int node, const Vector3d& d) const {
   return axis.norm() > 0 ? Vector3d(axis.normalized() * angle) : Vector3d::Zero();
 }
 
+void ShellChart::node_transform(const Eigen::VectorXd& x, const NodeRotation& rot, Matrix2d& T,
+                                Eigen::RowVector2d& drill) const {
+  const NodeState& ref = reference_[rot.node];
+  const Vector3d th = theta(x, rot);
+  const Matrix3d Q = rotation_matrix(th);
+  const Vector3d d = Q * ref.d, v1 = Q * ref.v1, v2 = Q * ref.v2;
+  Eigen::Matrix<double, 3, 2> W;  // spatial angular velocity per unit (da, db)
+  W.col(0) = ref.v1;
+  W.col(1) = ref.v2;
+  W = so3_left_jacobian(th) * W;
+  T.row(0) = v1.transpose() * W;
+  T.row(1) = v2.transpose() * W;
+  drill = d.transpose() * W;
+}
+
+std::vector<ShellChart::RotationBlock> ShellChart::rotation_blocks(const Eigen::VectorXd& x) const {
+  std::vector<RotationBlock> out;
+  out.reserve(rotations_.size());
+  for (const NodeRotation& rot : rotations_) {
+    RotationBlock b;
+    b.eq_a = rot.eq_a;
+    b.eq_b = rot.eq_b;
+    Eigen::RowVector2d drill;
+    node_transform(x, rot, b.T, drill);
+    // One prescribed component: theta stays on the other reference axis, T is diagonal there.
+    if (rot.eq_a < 0 || rot.eq_b < 0) b.T = Matrix2d(b.T.diagonal().asDiagonal());
+    out.push_back(b);
+  }
+  return out;
+}
+
 void ShellChart::to_chart_jacobian(const Eigen::VectorXd& x, const Eigen::VectorXd& r,
                                    SparseMatrix& K) const {
   SI_REQUIRE(K.cols() >= size() && K.rows() >= size() && r.size() == size(),
              "shell chart: Jacobian or residual of the wrong size");
   SI_REQUIRE(K.isCompressed(), "shell chart: the Jacobian must be compressed");
   for (const NodeRotation& rot : rotations_) {
-    const NodeState& ref = reference_[rot.node];
-    const Vector3d th = theta(x, rot);
-    const Matrix3d Q = rotation_matrix(th);
-    const Vector3d d = Q * ref.d, v1 = Q * ref.v1, v2 = Q * ref.v2;
-    Eigen::Matrix<double, 3, 2> W;  // spatial angular velocity per unit (da, db)
-    W.col(0) = ref.v1;
-    W.col(1) = ref.v2;
-    W = so3_left_jacobian(th) * W;
     Matrix2d T;
-    T.row(0) = v1.transpose() * W;
-    T.row(1) = v2.transpose() * W;
-    const Eigen::RowVector2d drill = d.transpose() * W;
+    Eigen::RowVector2d drill;
+    node_transform(x, rot, T, drill);
 
     // Columns: K T. A prescribed component has neither column nor chart coordinate; with the
     // other one free, theta stays on one reference axis and T is diagonal there (T(0,1) = 0).

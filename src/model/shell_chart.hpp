@@ -57,12 +57,24 @@ class ShellChart {
   // rotation block must be in the pattern.
   void to_chart_jacobian(const Eigen::VectorXd& x, const Eigen::VectorXd& r, SparseMatrix& K) const;
 
+  // The 2x2 blocks T(x) of the transform above, one per node with a free rotation component
+  // (eq_b = -1 or eq_a = -1 when that component is prescribed; T is then diagonal there). With
+  // them a caller can form T^T K T, the chart Hessian up to terms that vanish at equilibrium.
+  struct RotationBlock {
+    int eq_a = -1, eq_b = -1;
+    Matrix2d T = Matrix2d::Identity();
+  };
+  std::vector<RotationBlock> rotation_blocks(const Eigen::VectorXd& x) const;
+
  private:
   struct NodeRotation {
     int node = 0;
     int eq_a = -1, eq_b = -1;  // equations of the rotation dofs, -1 if prescribed
   };
   Vector3d theta(const Eigen::VectorXd& x, const NodeRotation& r) const;
+  // T of the header and the drilling row d^T W of one node at x.
+  void node_transform(const Eigen::VectorXd& x, const NodeRotation& r, Matrix2d& T,
+                      Eigen::RowVector2d& drill) const;
 
   const Mesh& mesh_;
   const DofMap& dofs_;
