@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
+#include "../verification_record.hpp"
 #include "core/error.hpp"
 #include "laminate_fixtures.hpp"
 
@@ -33,9 +35,12 @@ double relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 
 // Expects |computed - printed| <= half a unit of the printed last decimal `decimals` (the
 // reference of vam.md 12 is printed to that many decimals; a 1 % slack covers the print itself).
-void expect_printed(double computed, double printed, int decimals, const char* what) {
+void expect_printed(double computed, double printed, int decimals, const std::string& what) {
   const double half_unit = 0.5 * std::pow(10.0, -decimals) * 1.01;
   EXPECT_NEAR(computed, printed, half_unit) << what;
+  test::record_verification_absolute(
+      "section-vam", what, printed, computed, half_unit,
+      "vam.md (printed to " + std::to_string(decimals) + " decimals)");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -108,8 +113,8 @@ TEST(VamSection, Vam_IsotropicLs78_ShearCorrectionFactors) {
   for (const auto& [nu, k] : cases) {
     const VamSection s = analyze_vam(stack(Material::isotropic("iso", E, nu), {0}, h));
     const double mu = E / (2 * (1 + nu));
-    expect_printed(s.G(0, 0) / (mu * h), k, 7, "G11");
-    expect_printed(s.G(1, 1) / (mu * h), k, 7, "G22");
+    expect_printed(s.G(0, 0) / (mu * h), k, 7, "G11/(mu h), nu = " + std::to_string(nu));
+    expect_printed(s.G(1, 1) / (mu * h), k, 7, "G22/(mu h), nu = " + std::to_string(nu));
     EXPECT_GT(s.fit.relative_residual, 0.0185) << "nu " << nu;
     EXPECT_LT(s.fit.relative_residual, 0.0275) << "nu " << nu;
   }
@@ -169,6 +174,9 @@ TEST(VamSection, Vam_SwiftComp_sg12rm_line5_ClassicalStiffness) {
   const Matrix6d& A = s.A_R;
   auto expect_rel = [](double computed, double printed, const char* what) {
     EXPECT_NEAR(computed, printed, 1e-7 * std::abs(printed)) << what;
+    test::record_verification("section-vam", std::string("SwiftComp case A_R ") + what, printed,
+                              computed, 1e-7,
+                              "SwiftComp 2.1, sgio sg12rm_line5_sc21 (vam.md 11.2)");
   };
   expect_rel(A(0, 0), 1.2667447e6, "A11");
   expect_rel(A(0, 2), 1.5457201e5, "A12");
@@ -334,8 +342,8 @@ TEST(VamSection, Vam_PaperUd8_ReferenceValues) {
   const double top[] = {1.128815, 0, 0.596050, 0.714916, 0, 0.377498};
   const double bottom[] = {-1.128815, 0, -0.596050, 0.714916, 0, 0.377498};
   for (int i = 0; i < 6; ++i) {
-    expect_printed(s.Fbar_top(i), top[i], 6, "Fbar_top");
-    expect_printed(s.Fbar_bottom(i), bottom[i], 6, "Fbar_bottom");
+    expect_printed(s.Fbar_top(i), top[i], 6, "Fbar_top(" + std::to_string(i) + ")");
+    expect_printed(s.Fbar_bottom(i), bottom[i], 6, "Fbar_bottom(" + std::to_string(i) + ")");
   }
   expect_printed(s.c_L(0, 0), 1.11851e-4, 9, "c++");
 }
@@ -358,8 +366,8 @@ TEST(VamSection, Vam_PaperCrossPly2s_ReferenceValues) {
   const double top[] = {0.862432, 0, 0.862432, 0.609473, 0, 0.482941};
   const double bottom[] = {-0.862432, 0, -0.862432, 0.609473, 0, 0.482941};
   for (int i = 0; i < 6; ++i) {
-    expect_printed(s.Fbar_top(i), top[i], 6, "Fbar_top");
-    expect_printed(s.Fbar_bottom(i), bottom[i], 6, "Fbar_bottom");
+    expect_printed(s.Fbar_top(i), top[i], 6, "Fbar_top(" + std::to_string(i) + ")");
+    expect_printed(s.Fbar_bottom(i), bottom[i], 6, "Fbar_bottom(" + std::to_string(i) + ")");
   }
   expect_printed(s.c_L(0, 0), 1.11851e-4, 9, "c++");
   expect_printed(s.c_L(1, 1), 1.11851e-4, 9, "c--");
