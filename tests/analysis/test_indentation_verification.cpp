@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -161,11 +162,11 @@ TEST_F(ClampedPlateSphere, DeflectionAwayFromContact_KirchhoffPlusMindlinLog_Poi
     EXPECT_LT(std::abs(e_fine), 1e-3);
     const double ref_fine =
         fine_->force * plate_deflection_per_force(fine_->radii[i], t, fine_->kGt);
-    test::record_verification(
-        "contact-closed-forms",
-        "clamped plate + 1 mm sphere, w at r = " + std::to_string(fine_->radii[i]) +
-            " mm (0.5 mm mesh)",
-        ref_fine, fine_->deflections[i], 1e-3, "Kirchhoff + Mindlin log term (point-loads.md 4.2)");
+    char check[80];
+    std::snprintf(check, sizeof check,
+                  "clamped plate + 1 mm sphere, w at r = %.2f mm (0.5 mm mesh)", fine_->radii[i]);
+    test::record_verification("contact-closed-forms", check, ref_fine, fine_->deflections[i], 1e-3,
+                              "Kirchhoff + Mindlin log term (point-loads.md 4.2)");
     EXPECT_LT(std::abs(e_fine), std::abs(e_coarse) / 3);
   }
 }

@@ -113,8 +113,9 @@ TEST(VamSection, Vam_IsotropicLs78_ShearCorrectionFactors) {
   for (const auto& [nu, k] : cases) {
     const VamSection s = analyze_vam(stack(Material::isotropic("iso", E, nu), {0}, h));
     const double mu = E / (2 * (1 + nu));
-    expect_printed(s.G(0, 0) / (mu * h), k, 7, "G11/(mu h), nu = " + std::to_string(nu));
-    expect_printed(s.G(1, 1) / (mu * h), k, 7, "G22/(mu h), nu = " + std::to_string(nu));
+    const std::string at = ", nu = " + std::to_string(nu).substr(0, 4);  // "0.25", "0.30"
+    expect_printed(s.G(0, 0) / (mu * h), k, 7, "G11/(mu h)" + at);
+    expect_printed(s.G(1, 1) / (mu * h), k, 7, "G22/(mu h)" + at);
     EXPECT_GT(s.fit.relative_residual, 0.0185) << "nu " << nu;
     EXPECT_LT(s.fit.relative_residual, 0.0275) << "nu " << nu;
   }
