@@ -168,9 +168,10 @@ def markdown_table(records):
         source = "" if r["source"] == previous.get("source") else r["source"].replace("|", "\\|")
         test = "" if r["test"] == previous.get("test") else f"`{r['test']}`"
         previous = r
-        row = [r["check"].replace("|", "\\|"), fmt_number(r["reference"], 10),
+        row = [r["check"], fmt_number(r["reference"], 10),
                fmt_number(r["measured"], measured_digits(r)), fmt_error(r, r["error"]),
                fmt_tolerance(r), "yes" if r["pass"] else "**NO**"]
+        row = [cell.replace("|", "\\|") for cell in row]
         if not one_source:
             row.insert(2, source)
         row.append(test)
