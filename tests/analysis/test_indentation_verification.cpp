@@ -12,11 +12,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <string>
 
+#include "../verification_record.hpp"
 #include "core/error.hpp"
 #include "indentation_test_support.hpp"
 
@@ -157,6 +160,13 @@ TEST_F(ClampedPlateSphere, DeflectionAwayFromContact_KirchhoffPlusMindlinLog_Poi
               << " (e = 0.5 mm), " << e_coarse << " at r = " << coarse_->radii[i]
               << " (e = 1 mm)\n";
     EXPECT_LT(std::abs(e_fine), 1e-3);
+    const double ref_fine =
+        fine_->force * plate_deflection_per_force(fine_->radii[i], t, fine_->kGt);
+    char check[80];
+    std::snprintf(check, sizeof check,
+                  "clamped plate + 1 mm sphere, w at r = %.2f mm (0.5 mm mesh)", fine_->radii[i]);
+    test::record_verification("contact-closed-forms", check, ref_fine, fine_->deflections[i], 1e-3,
+                              "Kirchhoff + Mindlin log term (point-loads.md 4.2)");
     EXPECT_LT(std::abs(e_fine), std::abs(e_coarse) / 3);
   }
 }
@@ -181,6 +191,9 @@ TEST_F(ClampedPlateSphere, ForcePerDepth_ChangesWithTheMeshByTheMindlinLogTerm_P
             << " (2 pi kGt)) = " << step / log_term << "; equivalent load radius " << beta
             << " e; Kirchhoff stiffness " << 1 / kirchhoff << "\n";
   EXPECT_NEAR(step, log_term, 0.05 * log_term);
+  test::record_verification(
+      "contact-closed-forms", "clamped plate + sphere: compliance change 1 -> 0.5 mm mesh (mm/N)",
+      log_term, step, 0.05, "Mindlin log term ln 2 / (2 pi kGt) (point-loads.md 4.2)");
   // The stiffness lies below the Kirchhoff point-load stiffness by the shear term.
   EXPECT_LT(fine_->force / fine_->depth, 1 / kirchhoff);
 }
@@ -205,6 +218,9 @@ TEST(ContactVerification, ShallowCapSmallSphere_LinearApexStiffness_Reissner1946
             << ", error " << (k - k_ref) / k_ref << "\n";
   EXPECT_EQ(s.contact_nodes, 1);
   EXPECT_NEAR(k, k_ref, 0.05 * k_ref);
+  test::record_verification("contact-closed-forms",
+                            "shallow cap t = 0.2 mm, 1 mm sphere: linear apex stiffness (N/mm)",
+                            k_ref, k, 0.05, "Reissner 1946 (point-loads.md 4.1)");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -295,7 +311,12 @@ std::map<std::string, double> check_symmetries(IndentationFixture& f, const std:
     std::cout << " " << map.name << " " << out[map.name] << ";";
   }
   std::cout << "\n";
-  for (const std::string& name : exact) EXPECT_LT(out.at(name), 1e-12) << label << ": " << name;
+  for (const std::string& name : exact) {
+    EXPECT_LT(out.at(name), 1e-12) << label << ": " << name;
+    test::record_verification_absolute("contact-closed-forms",
+                                       label + ": pressure asymmetry / max p, " + name, 0.0,
+                                       out.at(name), 1e-12, "exact symmetry");
+  }
   return out;
 }
 
@@ -384,6 +405,10 @@ TEST(ContactVerification, QuarterModelReportsTheWholeShell) {
             << full.contact_area << "\n";
   const auto expect_same = [](double a, double b, const char* what) {
     EXPECT_NEAR(a, b, 1e-10 * std::abs(b)) << what;
+    test::record_verification(
+        "contact-closed-forms",
+        std::string("isotropic cap, h = 1.5 mm: quarter model vs full, ") + what, b, a, 1e-10,
+        "the full model (a different model of the same shell)");
   };
   expect_same(quarter.force, full.force, "force");
   expect_same(quarter.reaction, full.reaction, "reaction");
@@ -441,6 +466,10 @@ TEST(ContactVerification, IndenterWorkEqualsStrainEnergy_SecondOrderInTheStep_No
     std::cout << "  observed order " << order << "\n";
     EXPECT_GE(order, 1.7);
     EXPECT_LE(order, 2.3);
+    test::record_verification_absolute("contact-closed-forms",
+                                       "nonlinear [0/90]2S cap: order of W - U, steps " +
+                                           std::to_string(1 << k) + " -> " + std::to_string(2 << k),
+                                       2.0, order, 0.3, "trapezoidal rule, second order (W = U)");
   }
 }
 
@@ -479,6 +508,9 @@ TEST(ContactVerification, IndenterWorkEqualsStrainEnergy_SecondOrderInTheStep_Li
   std::cout << "  mean observed order " << order << " (U = " << energy << " N mm)\n";
   EXPECT_GE(order, 1.7);
   EXPECT_LE(order, 2.3);
+  test::record_verification_absolute("contact-closed-forms",
+                                     "linear [0/90]2S cap: mean order of W - U, 6 -> 96 steps", 2.0,
+                                     order, 0.3, "trapezoidal rule, second order (W = U)");
 }
 
 // ---------------------------------------------------------------------------------------------

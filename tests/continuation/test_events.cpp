@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
+#include "../verification_record.hpp"
 #include "branch_test_support.hpp"
 #include "continuation/natural.hpp"
 #include "continuation/pseudo_arclength.hpp"
@@ -66,10 +68,14 @@ void expect_cubic_events(const Branch& branch) {
   ASSERT_EQ(minima.size(), 1u);
   EXPECT_EQ(maxima[0].monitor, "y");
   EXPECT_NEAR(maxima[0].p, -1.0, kSlopeRootTol);
+  si::test::record_verification_absolute("continuation-library", "y = p^3 - 3p: maximum at p = -1",
+                                         -1.0, maxima[0].p, kSlopeRootTol, "exact");
   // y(-1) = 2: y is flat there, so only the corrector's error (||F|| <= 1e-10, |dF/dx| >= 1)
   // remains.
   EXPECT_NEAR(maxima[0].monitors(0), 2.0, 1e-10);
   EXPECT_NEAR(minima[0].p, 1.0, kSlopeRootTol);
+  si::test::record_verification_absolute("continuation-library", "y = p^3 - 3p: minimum at p = +1",
+                                         1.0, minima[0].p, kSlopeRootTol, "exact");
   EXPECT_NEAR(minima[0].monitors(0), -2.0, 1e-10);
 
   const auto zeros = test::events_of(branch, EventType::kZeroCrossing);
@@ -79,6 +85,9 @@ void expect_cubic_events(const Branch& branch) {
     EXPECT_TRUE(zeros[i].located);
     // |dy/dp| = 6 at +-sqrt(3), 3 at 0: the bracket in p is at most event_tolerance.
     EXPECT_NEAR(zeros[i].p, expected_zeros[i], 1e-9);
+    si::test::record_verification_absolute(
+        "continuation-library", "y = p^3 - 3p: zero crossing " + std::to_string(i + 1) + " of 3",
+        expected_zeros[i], zeros[i].p, 1e-9, "exact: 0, +-sqrt(3)");
   }
 
   const auto inflections = test::events_of(branch, EventType::kInflection);
@@ -87,6 +96,9 @@ void expect_cubic_events(const Branch& branch) {
     EXPECT_EQ(e.monitor, "y");
     EXPECT_TRUE(e.located);
     EXPECT_NEAR(e.p, 0.0, kCurvatureRootTol) << "against " << e.against;
+    si::test::record_verification_absolute("continuation-library",
+                                           "y = p^3 - 3p: inflection against " + e.against, 0.0,
+                                           e.p, kCurvatureRootTol, "exact");
   }
 
   // The signature (sign of y) changes at the three zeros, located by bisection.

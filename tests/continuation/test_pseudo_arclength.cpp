@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
+#include "../verification_record.hpp"
 #include "branch_test_support.hpp"
 #include "bratu_problem.hpp"
 #include "continuation/pseudo_arclength.hpp"
@@ -46,6 +48,13 @@ void expect_full_circle(Predictor predictor) {
   EXPECT_TRUE(limits[0].located && limits[1].located);
   EXPECT_NEAR(limits[0].p, 1.0, settings.event_tolerance);
   EXPECT_NEAR(limits[1].p, -1.0, settings.event_tolerance);
+  const std::string label = predictor == Predictor::kTangent ? "tangent" : "secant";
+  si::test::record_verification_absolute("continuation-library",
+                                         "circle, " + label + " predictor: limit point p = +1", 1.0,
+                                         limits[0].p, settings.event_tolerance, "exact");
+  si::test::record_verification_absolute("continuation-library",
+                                         "circle, " + label + " predictor: limit point p = -1",
+                                         -1.0, limits[1].p, settings.event_tolerance, "exact");
   EXPECT_NEAR(limits[0].x(0), 0.0, 2.0 * settings.event_tolerance);
   EXPECT_NEAR(limits[1].x(0), 0.0, 2.0 * settings.event_tolerance);
   EXPECT_LE(limits[0].accuracy, settings.event_tolerance);
@@ -133,6 +142,12 @@ TEST(ContPseudoArclength, BratuFoldBoyd1986) {
   const double richardson = (l_fine * h2_coarse - l_coarse * h2_fine) / (h2_coarse - h2_fine);
   EXPECT_NEAR(l_fine, lambda_c, 1e-4);      // acceptance, single grid
   EXPECT_NEAR(richardson, lambda_c, 1e-5);  // discretisation error below 1e-5 asked for
+  const char* const boyd = "Boyd 1986: lambda_c = 3.513830719";
+  si::test::record_verification_absolute("continuation-library", "1-D Bratu fold lambda_c, n = 400",
+                                         lambda_c, l_fine, 1e-4, boyd);
+  si::test::record_verification_absolute("continuation-library",
+                                         "1-D Bratu fold lambda_c, Richardson n = 200, 400",
+                                         lambda_c, richardson, 1e-5, boyd);
   std::printf(
       "Bratu fold: n=%d %.10f (err %.2e), n=%d %.10f (err %.2e), Richardson %.10f (err %.2e)\n",
       coarse, l_coarse, l_coarse - lambda_c, fine, l_fine, l_fine - lambda_c, richardson,

@@ -6,8 +6,10 @@
 // which is the acceptance level of issue 6 for the nonlinear problems.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
+#include "../verification_record.hpp"
 #include "fitting/linear_fit.hpp"
 #include "fitting_test_support.hpp"
 
@@ -25,6 +27,10 @@ void expect_certified(const std::string& file, double digits) {
   for (int j = 0; j <= degree; ++j) {
     EXPECT_GE(agreeing_digits(r.parameters[j], p.certified[j]), digits)
         << file << " B" << j << " = " << r.parameters[j];
+    // Relative error <= 10^-digits is "digits agreeing digits" (certified B_j are non-zero).
+    si::test::record_verification("nist-strd", file + " B" + std::to_string(j), p.certified[j],
+                                  r.parameters[j], std::pow(10.0, -digits),
+                                  "NIST StRD certified values (15 digits)");
     if (p.certified_sd[j] != 0.0) {
       EXPECT_GE(agreeing_digits(r.std_errors[j], p.certified_sd[j]), digits)
           << file << " sd(B" << j << ") = " << r.std_errors[j];

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "../verification_record.hpp"
 #include "fitting/builtin_models.hpp"
 #include "fitting/curve_model.hpp"
 #include "fitting/nonlinear_fit.hpp"
@@ -81,6 +82,9 @@ void expect_certified(const StrdProblem& p, const FitResult& r, const std::strin
     EXPECT_GE(agreeing_digits(r.parameters[j], p.certified[j]), kDigits)
         << what << " " << p.names[j] << " = " << r.parameters[j] << ", certified "
         << p.certified[j];
+    si::test::record_verification("nist-strd", what + " " + p.names[j], p.certified[j],
+                                  r.parameters[j], std::pow(10.0, -kDigits),
+                                  "NIST StRD certified values (11 digits)");
     EXPECT_GE(agreeing_digits(r.std_errors[j], p.certified_sd[j]), kDigits)
         << what << " sd(" << p.names[j] << ") = " << r.std_errors[j] << ", certified "
         << p.certified_sd[j];

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
+#include "../verification_record.hpp"
 #include "core/error.hpp"
 #include "laminate_fixtures.hpp"
 #include "section/reduced_stiffness.hpp"
@@ -23,10 +25,17 @@ using testing::symmetric;
 // accuracy of a correctly rounded print.
 constexpr double kHalfCent = 0.005 * (1 + 1e-12);
 
-void expect_block_printed(const Matrix3d& computed, const Matrix3d& printed) {
+// Also records the non-zero entries of the upper triangle for the report, named `block` + (i, j).
+void expect_block_printed(const Matrix3d& computed, const Matrix3d& printed,
+                          const std::string& block) {
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
+    for (int j = 0; j < 3; ++j) {
       EXPECT_NEAR(computed(i, j), printed(i, j), kHalfCent) << "entry " << i << "," << j;
+      if (j < i || printed(i, j) == 0) continue;
+      test::record_verification_absolute(
+          "section-clt", block + "(" + std::to_string(i) + "," + std::to_string(j) + ")",
+          printed(i, j), computed(i, j), kHalfCent, "vam.md 12 (2 decimals)");
+    }
 }
 
 // Mirror-symmetric stacks have B = int Q z dz = 0 (Jones 1999, section 4.5.1); round-off only.
@@ -121,8 +130,8 @@ TEST(CltSection, IndentationLayupsUnidirectional_VamSection12) {
   Matrix3d A, D;
   A << 497443.84, 0, 11479.47, 0, 22800.00, 0, 11479.47, 0, 38264.91;
   D << 598590.76, 0, 13813.63, 0, 27436.00, 0, 13813.63, 0, 46045.44;
-  expect_block_printed(a_block(abd), A);
-  expect_block_printed(d_block(abd), D);
+  expect_block_printed(a_block(abd), A, "[0]8 A");
+  expect_block_printed(d_block(abd), D, "[0]8 D");
 }
 
 TEST(CltSection, IndentationLayupsCrossPly_VamSection12) {
@@ -131,8 +140,8 @@ TEST(CltSection, IndentationLayupsCrossPly_VamSection12) {
   Matrix3d A, D;
   A << 267854.38, 0, 11479.47, 0, 22800.00, 0, 11479.47, 0, 267854.38;
   D << 425920.35, 0, 13813.63, 0, 27436.00, 0, 13813.63, 0, 218715.85;
-  expect_block_printed(a_block(abd), A);
-  expect_block_printed(d_block(abd), D);
+  expect_block_printed(a_block(abd), A, "[0/90]2S A");
+  expect_block_printed(d_block(abd), D, "[0/90]2S D");
 }
 
 // SwiftComp 2.1 output of the fixture sgio tests/fixtures/swiftcomp/sg12rm_line5_sc21.sg.k

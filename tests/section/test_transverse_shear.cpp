@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "../verification_record.hpp"
 #include "core/error.hpp"
 #include "laminate_fixtures.hpp"
 
@@ -80,6 +81,10 @@ TEST(TransverseShear, EquilibriumIndentationLayups_VamSection12) {
       equilibrium_shear_stiffness(make_laminate(m, kPaperPly, symmetric(repeat({0, 90}, 2))));
   EXPECT_NEAR(cross(0, 0), 14543.13, 0.01);
   EXPECT_NEAR(cross(1, 1), 9894.04, 0.01);
+  test::record_verification_absolute("section-clt", "G_eq [0/90]2S (1,1)", 14543.13, cross(0, 0),
+                                     0.01, "vam.md 12 (2 decimals, +-1 unit)");
+  test::record_verification_absolute("section-clt", "G_eq [0/90]2S (2,2)", 9894.04, cross(1, 1),
+                                     0.01, "vam.md 12 (2 decimals, +-1 unit)");
   EXPECT_NEAR(cross(0, 1), 0, 1e-12 * 14543);
 }
 
@@ -92,6 +97,10 @@ TEST(TransverseShear, PaganoCrossPly_VamSection11_3) {
   const Matrix2d eq = equilibrium_shear_stiffness(laminate);
   EXPECT_NEAR(eq(0, 0), 0.233126, 1e-6);
   EXPECT_NEAR(eq(1, 1), 0.240722, 1e-6);
+  test::record_verification_absolute("section-clt", "G_eq/(E_T h) Pagano [0/90/0] (1,1)", 0.233126,
+                                     eq(0, 0), 1e-6, "vam.md 11.3 (6 decimals, +-1 unit)");
+  test::record_verification_absolute("section-clt", "G_eq/(E_T h) Pagano [0/90/0] (2,2)", 0.240722,
+                                     eq(1, 1), 1e-6, "vam.md 11.3 (6 decimals, +-1 unit)");
   EXPECT_NEAR(eq(0, 1), 0, 1e-14);
   const Matrix2d fsdt = fsdt_shear_stiffness(laminate);
   EXPECT_NEAR(fsdt(0, 0), 1.0 / 3.0, 1e-14);
@@ -106,6 +115,8 @@ TEST(TransverseShear, EquilibriumAnglePlyCoupling_VamSection10_3) {
       make_laminate(paper_material(), kPaperPly, symmetric(repeat({15, -15}, 2)));
   const Matrix2d eq = equilibrium_shear_stiffness(laminate);
   EXPECT_NEAR(eq(0, 1), 776, 1.0);
+  test::record_verification_absolute("section-clt", "G_eq [15/-15]2S coupling (1,2)", 776, eq(0, 1),
+                                     1.0, "vam.md 10.3 (printed to the unit)");
   EXPECT_NEAR(eq(1, 0), 776, 1.0);
   EXPECT_LE(std::abs(fsdt_shear_stiffness(laminate)(0, 1)), 1e-13 * max_abs(eq));
 }

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
+#include "../verification_record.hpp"
 #include "core/error.hpp"
 #include "laminate_fixtures.hpp"
 
@@ -33,9 +35,12 @@ double relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 
 // Expects |computed - printed| <= half a unit of the printed last decimal `decimals` (the
 // reference of vam.md 12 is printed to that many decimals; a 1 % slack covers the print itself).
-void expect_printed(double computed, double printed, int decimals, const char* what) {
+void expect_printed(double computed, double printed, int decimals, const std::string& what) {
   const double half_unit = 0.5 * std::pow(10.0, -decimals) * 1.01;
   EXPECT_NEAR(computed, printed, half_unit) << what;
+  test::record_verification_absolute(
+      "section-vam", what, printed, computed, half_unit,
+      "vam.md (printed to " + std::to_string(decimals) + " decimals)");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -88,14 +93,16 @@ TEST(VamSection, Vam_IsotropicNu03_LoadCouplingAndFaceComplianceClosedForm) {
     EXPECT_LT((s.Fbar_top - top).norm(), 1e-12 * top.norm()) << s.Fbar_top.transpose();
     EXPECT_LT((s.Fbar_bottom - bottom).norm(), 1e-12 * bottom.norm());
     // vam.md 11.1 prints 0.2142857 and 0.0357143 for nu = 0.3.
-    expect_printed(s.Fbar_top(0), 0.2142857, 7, "Fbar_top(0)");
-    expect_printed(s.Fbar_top(3), 0.0357143, 7, "Fbar_top(3)");
+    expect_printed(s.Fbar_top(0), 0.2142857, 7,
+                   "isotropic Fbar_top(0), p = " + std::to_string(order));
+    expect_printed(s.Fbar_top(3), 0.0357143, 7,
+                   "isotropic Fbar_top(3), p = " + std::to_string(order));
 
     const double C33 = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
     Matrix2d c_L;
     c_L << h / (3 * C33), -h / (6 * C33), -h / (6 * C33), h / (3 * C33);
     EXPECT_LT((s.c_L - c_L).cwiseAbs().maxCoeff(), 1e-12 * c_L(0, 0)) << s.c_L;
-    expect_printed(s.c_L(0, 0), 0.2476190, 7, "c++");
+    expect_printed(s.c_L(0, 0), 0.2476190, 7, "isotropic c++, p = " + std::to_string(order));
   }
 }
 
@@ -108,8 +115,9 @@ TEST(VamSection, Vam_IsotropicLs78_ShearCorrectionFactors) {
   for (const auto& [nu, k] : cases) {
     const VamSection s = analyze_vam(stack(Material::isotropic("iso", E, nu), {0}, h));
     const double mu = E / (2 * (1 + nu));
-    expect_printed(s.G(0, 0) / (mu * h), k, 7, "G11");
-    expect_printed(s.G(1, 1) / (mu * h), k, 7, "G22");
+    const std::string at = ", nu = " + std::to_string(nu).substr(0, 4);  // "0.25", "0.30"
+    expect_printed(s.G(0, 0) / (mu * h), k, 7, "isotropic LS78 G11/(mu h)" + at);
+    expect_printed(s.G(1, 1) / (mu * h), k, 7, "isotropic LS78 G22/(mu h)" + at);
     EXPECT_GT(s.fit.relative_residual, 0.0185) << "nu " << nu;
     EXPECT_LT(s.fit.relative_residual, 0.0275) << "nu " << nu;
   }
@@ -147,9 +155,15 @@ TEST(VamSection, Vam_ClassicalStiffnessEqualsClt) {
     const VamSection s = analyze_vam(laminate);
     const double h = laminate.thickness();
     const Matrix6d clt = balanced(textbook_clt_abd(laminate), h);
-    EXPECT_LT((balanced(s.A_R, h) - clt).cwiseAbs().maxCoeff(), 1e-12 * clt.cwiseAbs().maxCoeff())
-        << s.A_R << "\nvs CLT\n"
-        << textbook_clt_abd(laminate);
+    const double difference = (balanced(s.A_R, h) - clt).cwiseAbs().maxCoeff();
+    EXPECT_LT(difference, 1e-12 * clt.cwiseAbs().maxCoeff()) << s.A_R << "\nvs CLT\n"
+                                                             << textbook_clt_abd(laminate);
+    test::record_verification(
+        {"section-vam",
+         "A_R vs CLT ABD (balanced), lay-up " + std::to_string(&laminate - &laminates[0] + 1) +
+             " of " + std::to_string(laminates.size()) + ": largest difference",
+         0.0, difference, 1e-12, "CLT (a different method)", test::ErrorScale::kCustom,
+         clt.cwiseAbs().maxCoeff(), "max ABD entry"});
   }
 }
 
@@ -169,6 +183,9 @@ TEST(VamSection, Vam_SwiftComp_sg12rm_line5_ClassicalStiffness) {
   const Matrix6d& A = s.A_R;
   auto expect_rel = [](double computed, double printed, const char* what) {
     EXPECT_NEAR(computed, printed, 1e-7 * std::abs(printed)) << what;
+    test::record_verification("section-vam", std::string("SwiftComp [45/0/45/0/45] A_R ") + what,
+                              printed, computed, 1e-7,
+                              "SwiftComp 2.1, sgio sg12rm_line5_sc21 (vam.md 11.2)");
   };
   expect_rel(A(0, 0), 1.2667447e6, "A11");
   expect_rel(A(0, 2), 1.5457201e5, "A12");
@@ -317,52 +334,53 @@ TEST(VamSection, Vam_LoadCouplingComputedBothWaysAgrees) {
 TEST(VamSection, Vam_PaperUd8_ReferenceValues) {
   const VamSection s = analyze_vam(stack(paper_material(), {0, 0, 0, 0, 0, 0, 0, 0}, 0.475));
   const Matrix6d& A = s.A_R;
-  expect_printed(A(0, 0), 497443.84, 2, "A11");
-  expect_printed(A(0, 2), 11479.47, 2, "A12");
-  expect_printed(A(1, 1), 22800.00, 2, "A66");
-  expect_printed(A(2, 2), 38264.91, 2, "A22");
-  expect_printed(A(3, 3), 598590.76, 2, "D11");
-  expect_printed(A(3, 5), 13813.63, 2, "D12");
-  expect_printed(A(4, 4), 27436.00, 2, "D66");
-  expect_printed(A(5, 5), 46045.44, 2, "D22");
+  expect_printed(A(0, 0), 497443.84, 2, "[0]8 A11");
+  expect_printed(A(0, 2), 11479.47, 2, "[0]8 A12");
+  expect_printed(A(1, 1), 22800.00, 2, "[0]8 A66");
+  expect_printed(A(2, 2), 38264.91, 2, "[0]8 A22");
+  expect_printed(A(3, 3), 598590.76, 2, "[0]8 D11");
+  expect_printed(A(3, 5), 13813.63, 2, "[0]8 D12");
+  expect_printed(A(4, 4), 27436.00, 2, "[0]8 D66");
+  expect_printed(A(5, 5), 46045.44, 2, "[0]8 D22");
   const double zeros =
       std::abs(A(0, 1)) + std::abs(A(1, 2)) + balanced(A, 3.8).topRightCorner<3, 3>().norm();
   EXPECT_LT(zeros, 1e-10 * A(0, 0));
-  expect_printed(s.G(0, 0), 9543.52, 2, "G11");
-  expect_printed(s.G(1, 1), 20302.24, 2, "G22");
+  expect_printed(s.G(0, 0), 9543.52, 2, "[0]8 G11");
+  expect_printed(s.G(1, 1), 20302.24, 2, "[0]8 G22");
   EXPECT_LT(std::abs(s.G(0, 1)), 1e-10 * s.G(0, 0));
   const double top[] = {1.128815, 0, 0.596050, 0.714916, 0, 0.377498};
   const double bottom[] = {-1.128815, 0, -0.596050, 0.714916, 0, 0.377498};
   for (int i = 0; i < 6; ++i) {
-    expect_printed(s.Fbar_top(i), top[i], 6, "Fbar_top");
-    expect_printed(s.Fbar_bottom(i), bottom[i], 6, "Fbar_bottom");
+    expect_printed(s.Fbar_top(i), top[i], 6, "[0]8 Fbar_top(" + std::to_string(i) + ")");
+    expect_printed(s.Fbar_bottom(i), bottom[i], 6, "[0]8 Fbar_bottom(" + std::to_string(i) + ")");
   }
-  expect_printed(s.c_L(0, 0), 1.11851e-4, 9, "c++");
+  expect_printed(s.c_L(0, 0), 1.11851e-4, 9, "[0]8 c++");
 }
 
 // vam.md 12, [0/90]2S with the paper material; tolerances as for [0]8.
 TEST(VamSection, Vam_PaperCrossPly2s_ReferenceValues) {
   const VamSection s = analyze_vam(stack(paper_material(), {0, 90, 0, 90, 90, 0, 90, 0}, 0.475));
   const Matrix6d& A = s.A_R;
-  expect_printed(A(0, 0), 267854.38, 2, "A11");
-  expect_printed(A(0, 2), 11479.47, 2, "A12");
-  expect_printed(A(1, 1), 22800.00, 2, "A66");
-  expect_printed(A(2, 2), 267854.38, 2, "A22");
-  expect_printed(A(3, 3), 425920.35, 2, "D11");
-  expect_printed(A(3, 5), 13813.63, 2, "D12");
-  expect_printed(A(4, 4), 27436.00, 2, "D66");
-  expect_printed(A(5, 5), 218715.85, 2, "D22");
-  expect_printed(s.G(0, 0), 14631.78, 2, "G11");
-  expect_printed(s.G(1, 1), 10059.07, 2, "G22");
+  expect_printed(A(0, 0), 267854.38, 2, "[0/90]2S A11");
+  expect_printed(A(0, 2), 11479.47, 2, "[0/90]2S A12");
+  expect_printed(A(1, 1), 22800.00, 2, "[0/90]2S A66");
+  expect_printed(A(2, 2), 267854.38, 2, "[0/90]2S A22");
+  expect_printed(A(3, 3), 425920.35, 2, "[0/90]2S D11");
+  expect_printed(A(3, 5), 13813.63, 2, "[0/90]2S D12");
+  expect_printed(A(4, 4), 27436.00, 2, "[0/90]2S D66");
+  expect_printed(A(5, 5), 218715.85, 2, "[0/90]2S D22");
+  expect_printed(s.G(0, 0), 14631.78, 2, "[0/90]2S G11");
+  expect_printed(s.G(1, 1), 10059.07, 2, "[0/90]2S G22");
   EXPECT_LT(std::abs(s.G(0, 1)), 1e-10 * s.G(0, 0));
   const double top[] = {0.862432, 0, 0.862432, 0.609473, 0, 0.482941};
   const double bottom[] = {-0.862432, 0, -0.862432, 0.609473, 0, 0.482941};
   for (int i = 0; i < 6; ++i) {
-    expect_printed(s.Fbar_top(i), top[i], 6, "Fbar_top");
-    expect_printed(s.Fbar_bottom(i), bottom[i], 6, "Fbar_bottom");
+    expect_printed(s.Fbar_top(i), top[i], 6, "[0/90]2S Fbar_top(" + std::to_string(i) + ")");
+    expect_printed(s.Fbar_bottom(i), bottom[i], 6,
+                   "[0/90]2S Fbar_bottom(" + std::to_string(i) + ")");
   }
-  expect_printed(s.c_L(0, 0), 1.11851e-4, 9, "c++");
-  expect_printed(s.c_L(1, 1), 1.11851e-4, 9, "c--");
+  expect_printed(s.c_L(0, 0), 1.11851e-4, 9, "[0/90]2S c++");
+  expect_printed(s.c_L(1, 1), 1.11851e-4, 9, "[0/90]2S c--");
 }
 
 // vam.md 11.3: Pagano [0/90/0] (E_L/E_T = 25, G_LT/E_T = 0.5, G_TT/E_T = 0.2, nu = 0.25, equal
@@ -371,8 +389,8 @@ TEST(VamSection, Vam_Pagano090_0_ShearStiffness) {
   const Material m = Material::orthotropic(
       "pagano", EngineeringConstants{25.0, 1.0, 1.0, 0.5, 0.5, 0.2, 0.25, 0.25, 0.25});
   const VamSection s = analyze_vam(stack(m, {0, 90, 0}, 1.0 / 3.0));
-  expect_printed(s.G(0, 0), 0.233374, 6, "G11");
-  expect_printed(s.G(1, 1), 0.249796, 6, "G22");
+  expect_printed(s.G(0, 0), 0.233374, 6, "Pagano [0/90/0] G/(E_T h) G11");
+  expect_printed(s.G(1, 1), 0.249796, 6, "Pagano [0/90/0] G/(E_T h) G22");
   EXPECT_LT(std::abs(s.G(0, 1)), 1e-12);
 }
 

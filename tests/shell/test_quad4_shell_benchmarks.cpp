@@ -5,7 +5,9 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 
+#include "../verification_record.hpp"
 #include "shell/quad4_shell.hpp"
 #include "shell_test_support.hpp"
 
@@ -101,6 +103,11 @@ TEST(Mitc4Patch, MacNealHarderMembrane_Sigma1333_Tau400) {
     EXPECT_NEAR(N(0) / kPatchT, 4000.0 / 3, 1e-8 * 1333);
     EXPECT_NEAR(N(2) / kPatchT, 4000.0 / 3, 1e-8 * 1333);
     EXPECT_NEAR(N(1) / kPatchT, 400, 1e-8 * 400);
+    const std::string source = "MacNeal & Harder 1985 membrane patch (exact)";
+    test::record_verification("shell-elements", name + " membrane patch sigma_x", 4000.0 / 3,
+                              N(0) / kPatchT, 1e-8 * 1333 / (4000.0 / 3), source);
+    test::record_verification("shell-elements", name + " membrane patch tau_xy", 400,
+                              N(1) / kPatchT, 1e-8, source);
   }
 }
 
@@ -123,6 +130,12 @@ TEST(Mitc4Patch, MacNealHarderBending_M1111e10_M3333e11) {
     EXPECT_NEAR(M(3), -D * (1 + kPatchNu) * 1e-3, 1e-8 * 1.111e-7);
     EXPECT_NEAR(M(5), -D * (1 + kPatchNu) * 1e-3, 1e-8 * 1.111e-7);
     EXPECT_NEAR(M(4), -D * (1 - kPatchNu) * 0.5e-3, 1e-8 * 3.333e-8);
+    const std::string source = "MacNeal & Harder 1985 bending patch (exact)";
+    const double m11 = -D * (1 + kPatchNu) * 1e-3, m12 = -D * (1 - kPatchNu) * 0.5e-3;
+    test::record_verification("shell-elements", name + " bending patch M11", m11, M(3),
+                              1e-8 * 1.111e-7 / std::abs(m11), source);
+    test::record_verification("shell-elements", name + " bending patch M12", m12, M(4),
+                              1e-8 * 3.333e-8 / std::abs(m12), source);
   }
 }
 
@@ -218,6 +231,9 @@ TEST(Mitc4Locking, ClampedSquarePlate_TimoshenkoTable35_0_00126532) {
               << " (mitc4), " << w_plain / w_kirchhoff << " (plain shear, locks)\n";
     if (ratio == 1000.0) {
       EXPECT_NEAR(w / w_kirchhoff, 1.0, 0.02);
+      test::record_verification(
+          "shell-elements", "clamped square plate 16x16, L/t = 1000, mitc4: centre w", 1.0,
+          w / w_kirchhoff, 0.02, "Timoshenko & Woinowsky-Krieger Table 35: 0.00126532 q a^4/D");
       EXPECT_LT(w_plain / w_kirchhoff, 0.5);
     }
   }
@@ -382,6 +398,14 @@ TEST(Mitc4Nonlinear, CantileverRolledIntoFullCircle_EndMoment2PiEIoverL) {
       EXPECT_LT(r.tip.norm(), 0.01 * L);
       EXPECT_LT((r.tip_director - Vector3d::UnitZ()).norm(), 0.05);
       EXPECT_NEAR(r.mid_height, L / M_PI, 0.01 * L / M_PI);
+      test::record_verification("shell-elements",
+                                "cantilever rolled into a circle, 32 elements: mid-span height",
+                                L / M_PI, r.mid_height, 0.01, "Euler elastica: L / pi");
+      test::record_verification({"shell-elements",
+                                 "cantilever rolled into a circle, 32 elements: tip distance "
+                                 "from the root",
+                                 0.0, r.tip.norm(), 0.01, "Euler elastica: 0",
+                                 test::ErrorScale::kCustom, L, "L"});
     }
   }
 }

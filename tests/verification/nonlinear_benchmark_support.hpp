@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../verification_record.hpp"
 #include "model/plate_meshes.hpp"
 #include "model/static_solver.hpp"
 #include "model/supports.hpp"
@@ -105,18 +106,22 @@ struct Tolerance {
 };
 
 // One column of a reference table and how to read the same quantity from a converged step.
-// Errors are printed in % of error_scale, or of the reference value if error_scale is 0.
+// Errors are printed in % of error_scale (named error_scale_name), or of the reference value if
+// error_scale is 0.
 struct Column {
   std::string name;
   std::vector<double> reference;
   std::function<double(const StepResult&)> computed;
   double error_scale = 0;
+  std::string error_scale_name;
 };
 
 // Checks every column at every tabulated load factor against its tolerance and prints the
 // comparison (load factor, then reference / computed / error in % per column, see Column) for
-// the verification report. Returns the largest error as a fraction of the allowed one.
-inline double expect_path_matches(const std::string& title, const BenchmarkRun& run,
+// the verification report, and records each comparison in table `table` of the report
+// (verification_record.hpp). Returns the largest error as a fraction of the allowed one.
+inline double expect_path_matches(const std::string& table, const std::string& source,
+                                  const std::string& title, const BenchmarkRun& run,
                                   const std::vector<double>& load_factors,
                                   const std::vector<Column>& columns, const Tolerance& tolerance) {
   std::printf("%s: %zu steps, %d Newton iterations (at most %d per step), %.2f s\n", title.c_str(),
@@ -138,6 +143,11 @@ inline double expect_path_matches(const std::string& title, const BenchmarkRun& 
           << title << ", " << c.name << " at load factor " << load_factors[i] << ": reference "
           << ref << ", computed " << value;
       worst = std::max(worst, std::abs(error) / tolerance.allowed(ref));
+      char check[64];
+      std::snprintf(check, sizeof check, "%s at load factor %.3f", c.name.c_str(), load_factors[i]);
+      test::record_verification({table, check, ref, value, tolerance.allowed(ref) / scale, source,
+                                 test::ErrorScale::kCustom, scale,
+                                 c.error_scale > 0 ? c.error_scale_name : "reference"});
     }
     std::printf("\n");
   }

@@ -13,6 +13,7 @@
 
 #include <string>
 
+#include "../verification_record.hpp"
 #include "model/plate_meshes.hpp"
 #include "shell_benchmark_support.hpp"
 
@@ -53,6 +54,9 @@ TEST(InPlaneCantilever, TipShear_Mitc4_10x1_and_10x2_TimoshenkoBeam_PL3over3EI_p
       std::printf("in-plane cantilever %s: tip %.6g, Timoshenko %.6g, ratio %.4f\n", r.mesh.c_str(),
                   r.value, reference, r.value / reference);
     EXPECT_NEAR(eas.value / reference, 1.0, 0.02) << eas.mesh;
+    test::record_verification("linear-benchmarks", "In-plane cantilever, tip shear, " + eas.mesh,
+                              reference, eas.value, 0.02,
+                              "Timoshenko beam P L^3/(3EI) + P L/(kGA)");
     EXPECT_LT(plain.value / reference, 0.98) << plain.mesh;  // control: the bilinear membrane locks
   }
 }

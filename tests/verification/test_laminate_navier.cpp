@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "../section/laminate_fixtures.hpp"
+#include "../verification_record.hpp"
 #include "model/plate_meshes.hpp"
 #include "section/clt_section.hpp"
 #include "section/transverse_shear.hpp"
@@ -90,6 +91,11 @@ void check_layup(const std::string& layup) {
                 100 * (r.value / c.w_bar_fsdt - 1), r.seconds);
     // Acceptance ("Shell finite elements" issue): within 0.5 % of the Navier FSDT value.
     EXPECT_NEAR(r.value / c.w_bar_fsdt, 1.0, 0.005) << c.layup << " S = " << c.S;
+    test::record_verification("linear-benchmarks",
+                              "Navier FSDT " + c.layup + ", S = " + std::to_string(int(c.S)) +
+                                  ", w_bar, mitc4 " + r.mesh + " quarter",
+                              c.w_bar_fsdt, r.value, 0.005,
+                              "Navier FSDT series (laminate_navier_fsdt_clt.csv)");
   }
 }
 

@@ -24,6 +24,7 @@ using verification::mean_displacement;
 using verification::Tolerance;
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr const char* kSzeS4R = "Sze, Liu & Lo 2004, ABAQUS S4R table (nonlinear.md)";
 
 // Load factors 0.05, 0.10, ..., 1.00 (the tabulated levels of sections 3.1 and 3.2).
 std::vector<double> twentieths() {
@@ -50,9 +51,10 @@ BenchmarkRun run_strip(const CantileverStrip& strip, const Loads& loads) {
 // reference value).
 std::vector<Column> tip_columns(const std::vector<double>& minus_u, const std::vector<double>& w,
                                 double error_scale) {
-  return {{"-U_tip", minus_u, [](const StepResult& s) { return -mean_displacement(s).x(); },
-           error_scale},
-          {"W_tip", w, [](const StepResult& s) { return mean_displacement(s).z(); }, error_scale}};
+  return {
+      {"-U_tip", minus_u, [](const StepResult& s) { return -mean_displacement(s).x(); },
+       error_scale, "L"},
+      {"W_tip", w, [](const StepResult& s) { return mean_displacement(s).z(); }, error_scale, "L"}};
 }
 
 // Sze, Liu & Lo 2004, sec. 3.1: L = 10, end shear P up to 4 (= 4 EI/L^2) over the free end;
@@ -73,7 +75,8 @@ TEST(NonlinearShellBenchmarks, SzeLiuLo2004_CantileverEndShear_Mitc4_16x1) {
   Loads loads;
   loads.points.push_back({"edge_x1", Vector3d(0, 0, P), false});  // total, split over the end
   const BenchmarkRun run = run_strip(strip, loads);
-  verification::expect_path_matches("Sze 3.1 cantilever end shear, mitc4 16x1", run, twentieths(),
+  verification::expect_path_matches("sze-cantilever-shear", kSzeS4R,
+                                    "Sze 3.1 cantilever end shear, mitc4 16x1", run, twentieths(),
                                     tip_columns(kSze31MinusU, kSze31W, 0), Tolerance{0.015, 0.002});
 }
 
@@ -100,9 +103,10 @@ TEST(NonlinearShellBenchmarks, SzeLiuLo2004_CantileverEndMoment_ExactElastica_Mi
     minus_u.push_back(L * (1 - std::sin(theta) / theta));
     w.push_back(L * (1 - std::cos(theta)) / theta);
   }
-  verification::expect_path_matches("Sze 3.2 cantilever end moment, mitc4 32x1 (errors in % of L)",
-                                    run, twentieths(), tip_columns(minus_u, w, L),
-                                    Tolerance{0, 0.01 * L});
+  verification::expect_path_matches(
+      "sze-cantilever-moment", "exact elastica (Sze, Liu & Lo 2004 sec. 3.2)",
+      "Sze 3.2 cantilever end moment, mitc4 32x1 (errors in % of L)", run, twentieths(),
+      tip_columns(minus_u, w, L), Tolerance{0, 0.01 * L});
 }
 
 // Sze, Liu & Lo 2004, sec. 3.3: flat annulus Ri = 6, Ro = 10, h = 0.03, E = 21e6, nu = 0, cut
@@ -150,11 +154,12 @@ void check_slit_plate(int n_radial, int n_circ, int steps) {
     outer.push_back(kSze33WOuter[i]);
   }
   const std::vector<Column> columns = {
-      {"W_A inner", inner, [](const StepResult& s) { return s.displacements[0].z(); }},
-      {"W_B outer", outer, [](const StepResult& s) { return s.displacements[1].z(); }}};
-  verification::expect_path_matches("Sze 3.3 slit annular plate, mitc4 " +
-                                        std::to_string(n_radial) + "x" + std::to_string(n_circ),
-                                    run, factors, columns, Tolerance{0.02, 0});
+      {"W_A inner", inner, [](const StepResult& s) { return s.displacements[0].z(); }, 0, ""},
+      {"W_B outer", outer, [](const StepResult& s) { return s.displacements[1].z(); }, 0, ""}};
+  const std::string mesh_name = std::to_string(n_radial) + "x" + std::to_string(n_circ);
+  verification::expect_path_matches("sze-slit-plate-" + mesh_name, kSzeS4R,
+                                    "Sze 3.3 slit annular plate, mitc4 " + mesh_name, run, factors,
+                                    columns, Tolerance{0.02, 0});
 }
 
 // Default: 6x80 in 20 steps (the 20 tabulated levels that are multiples of 0.05) keeps the run

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "../verification_record.hpp"
 #include "point_load_support.hpp"
 
 namespace si {
@@ -84,6 +85,9 @@ TEST_F(ClampedPlateLinear, DeflectionAtHalfRadius_TimoshenkoKirchhoffPlusMindlin
             << " mm, Kirchhoff " << kirchhoff << ", Kirchhoff + shear " << expected
             << " (kGt = " << kGt << " N/mm), error " << (w - expected) / expected << "\n";
   EXPECT_NEAR(w, expected, 0.01 * expected);
+  test::record_verification("point-loads", "clamped plate a = 25, t = 3.8, F = 1 kN, w at r = a/2",
+                            expected, w, 0.01,
+                            "Kirchhoff + Reissner-Mindlin shear term (point-loads.md 4.2)");
 }
 
 // (c) Linear: the work of the load F w / 2 equals the strain energy 1/2 q^T K q (Clapeyron).
@@ -95,6 +99,8 @@ TEST_F(ClampedPlateLinear, ClapeyronWorkEqualsStrainEnergy) {
   const double apex_work = 0.5 * (kForce / 4) * deflection(run, run.model.apex_node());
   EXPECT_NEAR(work, apex_work, 1e-12 * apex_work);
   EXPECT_NEAR(run.strain_energy, apex_work, 1e-10 * apex_work);
+  test::record_verification("point-loads", "linear plate: strain energy vs work F w / 2", apex_work,
+                            run.strain_energy, 1e-10, "Clapeyron's theorem (exact)");
   EXPECT_NEAR(run.steps.back().energy, apex_work, 1e-10 * apex_work);
 }
 
@@ -142,6 +148,9 @@ TEST(PointLoads, ClampedPlateNonlinear_TrapezoidWorkEqualsStrainEnergy) {
             << (richardson - U) / U << ")\n";
   EXPECT_GT(w.back() / kT, 0.5);  // really nonlinear
   EXPECT_LE(std::abs(W - U), 2 * estimate);
+  test::record_verification(
+      "point-loads", "nonlinear plate F = 100 kN: trapezoid load work vs strain energy (N mm)", U,
+      W, 2 * estimate / U, "W = U, tolerance 2 x the Richardson estimate of the trapezoid error");
   EXPECT_LT(std::abs(richardson - U), std::abs(W - U));
   const StepResult& last = run.steps.back();
   EXPECT_LT((last.reaction_force + last.applied_force).norm(), 1e-8 * force / 4);
@@ -175,6 +184,8 @@ TEST(PointLoads, ThinCapApexStiffness_Reissner1946) {
   std::cout << "thin cap t = " << t << " mm: k_FE = " << k << " N/mm, Reissner " << k_ref
             << ", error " << (k - k_ref) / k_ref << "\n";
   EXPECT_NEAR(k, k_ref, 0.05 * k_ref);
+  test::record_verification("point-loads", "thin cap t = 0.2 mm, linear apex stiffness (N/mm)",
+                            k_ref, k, 0.05, "Reissner 1946 (point-loads.md 4.1)");
 }
 
 // The paper's cap (t = 3.8 mm, base radius 2.6 l: outside Reissner's validity range, so no

@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "../verification_record.hpp"
 #include "analysis/load_problem.hpp"
 #include "continuation/pseudo_arclength.hpp"
 #include "model/cylindrical_panel_mesh.hpp"
@@ -114,6 +115,7 @@ double load_at(const std::vector<PathPoint>& piece, double w) {
 struct PointError {
   PathPoint reference;
   double error;
+  double load_factor;  // ours, lambda(W_i)
 };
 std::vector<PointError> path_errors(const std::vector<PathPoint>& reference,
                                     const std::vector<PathPoint>& ours) {
@@ -136,7 +138,7 @@ std::vector<PointError> path_errors(const std::vector<PathPoint>& reference,
                      ? a.load_factor
                      : b.load_factor;
       }
-      errors.push_back({p, std::abs(lambda - p.load_factor)});
+      errors.push_back({p, std::abs(lambda - p.load_factor), lambda});
     }
   }
   return errors;
@@ -226,7 +228,16 @@ void print_run(const std::string& title, const RoofRun& run) {
 
 // The first limit load (the first limit_point event of the parameter) against the table's first
 // local maximum of P/Pmax: within 1 % of Pmax.
-void expect_first_limit_load(const RoofRun& run, const std::vector<PathPoint>& reference) {
+// Errors of the report (verification_record.hpp) are in units of Pmax, as the acceptance.
+constexpr const char* kSzeRoofSource = "Sze, Liu & Lo 2004 sec. 3.8, ABAQUS S4R (csv/sze2004_3-8*)";
+
+void record_in_pmax(const std::string& check, double reference, double ours, double tolerance) {
+  test::record_verification({"sze-hinged-roof", check, reference, ours, tolerance, kSzeRoofSource,
+                             test::ErrorScale::kCustom, 1.0, "Pmax"});
+}
+
+void expect_first_limit_load(const std::string& label, const RoofRun& run,
+                             const std::vector<PathPoint>& reference) {
   ASSERT_EQ(run.branch.status, cont::Status::kReachedBound) << run.branch.reason;
   const auto limits = events_of(run.branch, cont::EventType::kLimitPoint);
   ASSERT_FALSE(limits.empty());
@@ -236,19 +247,26 @@ void expect_first_limit_load(const RoofRun& run, const std::vector<PathPoint>& r
   std::printf("  first limit load P/Pmax: reference %.4f, ours %.4f (error %.2f %% of Pmax)\n",
               ref_limit, limit, 100 * (limit - ref_limit));
   EXPECT_NEAR(limit, ref_limit, 0.01);
+  record_in_pmax(label + ": first limit load P/Pmax", ref_limit, limit, 0.01);
 }
 
 // The path: at every tabulated point the error of path_errors (P/Pmax at the same deflection on
 // the matching monotonic piece) is at most 0.02, i.e. 2 % of Pmax.
-void expect_path_within_2_percent(const RoofRun& run, const std::vector<PathPoint>& reference) {
+void expect_path_within_2_percent(const std::string& label, const RoofRun& run,
+                                  const std::vector<PathPoint>& reference) {
   const std::vector<PointError> errors = path_errors(reference, run.path);
   double worst = 0;
   for (const PointError& e : errors) worst = std::max(worst, e.error);
   std::printf("  path: largest error %.2f %% of Pmax over %zu comparisons\n", 100 * worst,
               errors.size());
-  for (const PointError& e : errors)
+  for (const PointError& e : errors) {
     EXPECT_LE(e.error, 0.02) << "tabulated point P/Pmax " << e.reference.load_factor << ", -W_C "
                              << e.reference.deflection;
+    char check[96];
+    std::snprintf(check, sizeof check, "%s: path P/Pmax at -W_C = %.3f", label.c_str(),
+                  e.reference.deflection);
+    record_in_pmax(check, e.reference.load_factor, e.load_factor, 0.02);
+  }
 }
 
 // Measured (mitc4 quarter n x n; first limit load error, largest path error, both in % of Pmax,
@@ -257,8 +275,8 @@ void expect_path_within_2_percent(const RoofRun& run, const std::vector<PathPoin
 TEST(SzeHingedRoof, SzeLiuLo2004_Sec38a_IsotropicH12p7_Mitc4Quarter8x8) {
   const RoofRun run = trace_roof(12.7, 8, false);
   print_run("Sze 3.8(a) hinged roof h = 12.7, mitc4 quarter 8x8", run);
-  expect_first_limit_load(run, kSze38a);
-  expect_path_within_2_percent(run, kSze38a);
+  expect_first_limit_load("(a) h = 12.7, quarter 8x8", run, kSze38a);
+  expect_path_within_2_percent("(a) h = 12.7, quarter 8x8", run, kSze38a);
 }
 
 // Snap-through and snap-back: the first limit load and the two turning points of the centre
@@ -267,7 +285,7 @@ TEST(SzeHingedRoof, SzeLiuLo2004_Sec38a_IsotropicH12p7_Mitc4Quarter8x8) {
 TEST(SzeHingedRoof, SzeLiuLo2004_Sec38d_IsotropicH6p35_FirstLimitLoadAndSnapBack_Mitc4Quarter8x8) {
   const RoofRun run = trace_roof(6.35, 8, true);
   print_run("Sze 3.8(d) hinged roof h = 6.35, mitc4 quarter 8x8", run);
-  expect_first_limit_load(run, kSze38d);
+  expect_first_limit_load("(d) h = 6.35, quarter 8x8", run, kSze38d);
   const auto maxima = events_of(run.branch, cont::EventType::kMonitorMax);
   const auto minima = events_of(run.branch, cont::EventType::kMonitorMin);
   ASSERT_EQ(maxima.size(), 1u);
@@ -333,8 +351,8 @@ TEST(SzeHingedRoof, SzeLiuLo2004_Sec38d_IsotropicH6p35_Path_Mitc4Quarter24x24) {
   if (!verification::long_tests_enabled()) GTEST_SKIP() << "set SHELLINDENT_LONG_TESTS=1";
   const RoofRun run = trace_roof(6.35, 24, true);
   print_run("Sze 3.8(d) hinged roof h = 6.35, mitc4 quarter 24x24", run);
-  expect_first_limit_load(run, kSze38d);
-  expect_path_within_2_percent(run, kSze38d);
+  expect_first_limit_load("(d) h = 6.35, quarter 24x24", run, kSze38d);
+  expect_path_within_2_percent("(d) h = 6.35, quarter 24x24", run, kSze38d);
 }
 
 }  // namespace
