@@ -69,7 +69,9 @@ def coefficient_panel(ax, theta_rows, fits, cases, name, paper_eq):
     ax.plot(grid, [poly_value(paper_eq, math.radians(t)) for t in grid], ":",
             label=f"paper eq {82 if name == 'C1' else 83} (theta in rad)")
     ax.set_xlabel("lay-up angle theta (deg), [theta/-theta]2S")
-    ax.set_ylabel(name + (" (N/mm^C2)" if name == "C1" else " (-)"))
+    ax.set_ylabel(name + (" (N/mm^C2, log scale)" if name == "C1" else " (-)"))
+    if name == "C1":  # ours and the paper's differ by ~30x (report: magnitude)
+        ax.set_yscale("log")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7)
 

@@ -23,7 +23,6 @@ docs/paper-reproduction.md and its figures docs/figures/paper_*.png (with --quic
 passed, 1 otherwise (the reasons are printed). Needs /usr/bin/python3 with matplotlib.
 """
 import argparse
-import json
 import math
 import os
 import sys
@@ -33,7 +32,7 @@ import paper_data
 import paper_figures
 import paper_report
 from study_support import (SOURCE_DIR, STUDIES_DIR, StudyError, case_dirs, column, default_exe,
-                           fit_cli, interpolate, load_json, load_path, run_sweep, theta_of,
+                           fit_cli, interpolate, load_path, measured_wall_time, run_sweep, theta_of,
                            write_csv)
 
 # Variant name -> (study file in studies/, what it changes with respect to the default).
@@ -45,6 +44,7 @@ VARIANTS = {
     "bernstein4": ("paper_layups_bernstein4.yaml", "the paper's Bernstein element (bernstein4)"),
 }
 
+GRID_STEP_MM = 0.1  # path.step of the studies: the paper's depth grid (P9)
 REPORT_DEPTHS_MM = (1.0, 5.0, 10.0)  # forces tabulated per variant
 C2_PHYSICAL_RANGE = (0.9, 3.0)  # linear contact gives ~1; membrane stiffening at most ~3 (w^3)
 
@@ -79,34 +79,40 @@ def run_variants(args, out):
     return runs
 
 
-def measured_wall_time(run):
-    """(wall seconds, when measured) of a sweep. A rerun over existing results skips the finished
-    cases (docs/sweeps.md, resuming) and takes no time; then the time of the run that computed
-    them is reported, kept in DIR/timing.json."""
-    path = os.path.join(run["dir"], "timing.json")
-    log = os.path.join(run["dir"], "sweep.log")
-    skipped = os.path.exists(log) and "already done, skipped" in open(log).read()
-    if skipped and os.path.exists(path):
-        t = load_json(path)
-        return t["wall_s"], t["measured"] + " (cases reused by this run)"
-    now = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
-    with open(path, "w") as f:
-        json.dump({"wall_s": run["wall_s"], "measured": now, "load_average": os.getloadavg()}, f)
-    return run["wall_s"], now
-
-
 # ---- 2. Per-case results --------------------------------------------------------------------
 
-def case_results(run, depth_max):
-    """One dict per case of a sweep: lay-up, status, fit, forces at the report depths, energy
-    and work at depth_max, critical forces, and the path itself (for the figures)."""
+def grid_fit(exe, case_dir, depth_max):
+    """T = C1 h^C2 fitted to the force on the paper's 0.1 mm depth grid (path_grid.csv of a
+    pseudo-arclength run, path.csv of a linear run, which is on the grid; docs/results.md), the
+    paper's procedure (P9, eq 81). The sweep's own fit uses the adaptive continuation points,
+    whose spacing changes from run to run and weights the fit (report: Table 2)."""
+    grid = os.path.join(case_dir, "path_grid.csv")
+    data = grid if os.path.exists(grid) else os.path.join(case_dir, "path.csv")
+    if not os.path.exists(data):
+        return {}
+    doc = fit_cli(exe, data, "depth_mm", "force_N", "power",
+                  os.path.join(case_dir, "grid.fit-power.json"),
+                  [f"--range={GRID_STEP_MM}:{depth_max}"])
+    out = {"fit_status": doc["status"], "R2": doc["statistics"]["r_squared"],
+           "grid_points": doc["statistics"]["points"]}
+    for p in doc["parameters"]:
+        out.update({p["name"]: p["value"], p["name"] + "_lo": p["ci_low"],
+                    p["name"] + "_hi": p["ci_high"]})
+    return out
+
+
+def case_results(exe, run, depth_max):
+    """One dict per case of a sweep: lay-up, status, the power-law fit on the 0.1 mm grid (and
+    the sweep's fit on the path points, *_points), forces at the report depths, energy and work
+    at depth_max, critical forces, and the path itself (for the figures)."""
     doc = run["doc"]
     if doc is None:
         return []
     dirs = case_dirs(run["dir"])
     cases = []
     for c in doc["cases"]:
-        rows, events = load_path(dirs.get(int(c["case"]), ""))
+        case_dir = dirs.get(int(c["case"]), "")
+        rows, events = load_path(case_dir)
         depth = column(rows, "depth_mm") if rows else []
         at = {h: interpolate(depth, column(rows, "force_N"), h) if rows else None
               for h in REPORT_DEPTHS_MM + (depth_max,)}
@@ -115,8 +121,9 @@ def case_results(run, depth_max):
         cases.append({
             "layup": c.get("laminate.layup"), "theta_deg": theta_of(c.get("laminate.layup")),
             "status": c.get("status"), "reason": c.get("reason"),
-            "fit_status": c.get("fit_status"), "R2": c.get("R2"),
-            **{k: c.get(k) for k in ("C1", "C1_lo", "C1_hi", "C2", "C2_lo", "C2_hi")},
+            "fit_status": None, "R2": None,
+            **{k + "_points": c.get(k) for k in ("C1", "C2", "R2")},
+            **(grid_fit(exe, case_dir, depth_max) if rows else {}),
             **{f"force_{h:g}mm_N": at[h] for h in REPORT_DEPTHS_MM},
             "force_at_depth_max_N": at[depth_max],
             "energy_J": energy / 1000 if energy is not None else None,
@@ -204,7 +211,7 @@ def main():
     start = time.monotonic()
     runs = run_variants(args, out)
     sweeps_wall = time.monotonic() - start
-    results = {name: case_results(run, depth_max) for name, run in runs.items()}
+    results = {name: case_results(args.exe, run, depth_max) for name, run in runs.items()}
     try:
         theta_rows, fits = theta_fits(args.exe, results["default"], out)
     except StudyError as e:

@@ -10,11 +10,11 @@ import os
 import re
 
 import paper_data
-from study_support import (clt_bending_stiffness, effective_bending_stiffness, poly_coefficients,
-                           poly_value, write_csv)
+from study_support import (clt_bending_stiffness, effective_bending_stiffness, interpolate,
+                           poly_coefficients, poly_value, write_csv)
 
 TABLE_COLUMNS = ["layup", "theta_deg", "status", "fit_status", "C1", "C1_lo", "C1_hi", "C2",
-                 "C2_lo", "C2_hi", "R2", "force_1mm_N", "force_5mm_N", "force_10mm_N",
+                 "C2_lo", "C2_hi", "R2", "grid_points", "C1_points", "C2_points", "R2_points", "force_1mm_N", "force_5mm_N", "force_10mm_N",
                  "force_at_depth_max_N", "energy_J", "work_J", "critical_k11_depth_mm",
                  "critical_k11_force_N", "critical_k22_depth_mm", "critical_k22_force_N"]
 
@@ -127,20 +127,27 @@ def table2_section(cases):
     lines = [
         "## Table 2: T_N = C1 h^C2 per lay-up (eq 81)",
         "",
-        "Fitted by `shellindent sweep` (`fit: {model: power, range: \"0:10\"}`): nonlinear least "
-        "squares on T_N in N over all converged points with 0 < h <= 10 mm, 95 % intervals from "
-        "the linearisation (docs/fitting.md). The paper's C1 is its force at h = 1 mm.",
+        "Fitted as the paper did, to the force every 0.1 mm (path_grid.csv, the branch "
+        "interpolated linearly between continuation points; `shellindent fit path_grid.csv "
+        "--model power --range=0.1:10`: nonlinear least squares on T_N in N, 95 % intervals from "
+        "the linearisation, docs/fitting.md). The paper's C1 is its force at h = 1 mm. The last "
+        "column is the sweep's own fit (sweep.csv) to the adaptive continuation points: "
+        "the same curve sampled differently gives a different C2, because one power law "
+        "fits the path only roughly (R^2 about 0.97: the force grows faster than any single "
+        "power as the cap is pressed flat, see Kinematics below); e.g. the quarter and the full "
+        "[0/0]2S models give the same forces to 4 digits but different point sets.",
         "",
         "| lay-up | paper C1 | paper C2 | our C1 [95 %] (N/mm^C2) | our C2 [95 %] | R^2 | "
-        "our T_N at 1 mm (kN) | our T_N at 10 mm (kN) | paper T at 10 mm (kN) |",
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|",
+        "our T_N at 1 mm (kN) | our T_N at 10 mm (kN) | paper T at 10 mm (kN) | sweep fit C1, C2 |",
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
     ]
     for c in cases:
         p = paper_data.TABLE2.get(c["layup"], (None, None))
         p10 = p[0] * 10 ** p[1] if p[0] else None
         lines.append(f"| {c['layup']} | {num(p[0], 6)} | {num(p[1])} | {interval(c, 'C1')} | "
                      f"{interval(c, 'C2')} | {num(c.get('R2'), 3)} | {kn(c['force_1mm_N'])} | "
-                     f"{kn(c['force_10mm_N'])} | {kn(p10)} |")
+                     f"{kn(c['force_10mm_N'])} | {kn(p10)} | {num(c.get('C1_points'))}, "
+                     f"{num(c.get('C2_points'))} |")
     lines += ["", "![T_N(h) per lay-up](figures/paper_fig07_force_depth.png)", ""]
     return lines
 
@@ -187,6 +194,12 @@ def theta_section(theta_rows, fits):
     return lines
 
 
+def eq85_peak_deg():
+    """theta (deg, 0.1 deg grid on 0..90) where the paper's eq 85, theta in radians, is largest."""
+    grid = [i / 10 for i in range(901)]
+    return max(grid, key=lambda t: poly_value(paper_data.EQ85_ENERGY_J, math.radians(t)))
+
+
 def energy_section(theta_rows, fits, depth_max):
     fit = fits["energy"]
     sel = fit.get("degree_selection", {})
@@ -222,9 +235,12 @@ def energy_section(theta_rows, fits, depth_max):
         "The paper's sixth-degree polynomial through seven points is an interpolation (no degree "
         "of freedom left), which its text calls the best fit.",
         "",
-        "**The paper's eq 85 is not consistent with its Table 2**: integrating its own power laws "
-        "from 0 to 10 mm gives about 10-20 J, eq 85 gives 350-400 J. Our energies are of the "
-        "order of eq 85 only because our forces are ~100 times the paper's (below: magnitude).",
+        "**The paper's eq 85 is not consistent with its Table 2 nor with its text**: integrating "
+        "its own power laws from 0 to 10 mm gives 10-18 J, eq 85 gives 270-450 J; and eq 85 "
+        f"(radians) peaks at theta = {eq85_peak_deg():.0f} deg, while the text says [60/-60]2S "
+        "stores the most energy (its Table 2 power laws put the maximum at 75 deg). Our "
+        "energies at 10 mm are of the order of eq 85's only because our forces are some 30-100 "
+        "times the paper's (below: magnitude).",
         "",
         "![Energy against theta](figures/paper_fig12_energy_theta.png)",
         "",
@@ -253,8 +269,10 @@ def critical_section(cases):
     lines += [
         "",
         "The inflections depend on the mesh (docs/sweeps.md: at 1 mm the [0/90]2S path has them "
-        "at 1.32 and 1.64 mm, at 1.25 mm none); the curvatures grow almost linearly with the "
-        "depth and k12 stays near zero for the cross ply, as in the paper's Fig 11.",
+        "at 1.32 and 1.64 mm, at 1.25 mm none). The paper's Fig 11 has the curvatures growing "
+        "linearly with the depth; ours do so only over the first 1-2 mm and then level off as the "
+        "cap is pressed against the sphere and the apex region conforms to it. As in the paper, k12 + k21 stays zero for the cross ply (no bending-twisting "
+        "coupling) and small for the angle plies.",
         "",
         "![T_N against the curvatures](figures/paper_fig10_force_curvature.png)",
         "",
@@ -286,12 +304,11 @@ def variants_section(runs, results, layups=("[0/0]2S", "[0/90]2S", "[45/-45]2S")
                          f"{num(c.get('C1'))} | {num(c.get('C2'))} |")
     failed = [(n, r) for n, r in runs.items() if r["exit_code"] != 0]
     for name, r in failed:
-        msgs = sorted({str(c.get("reason")) for c in results.get(name, []) if c["status"] != "completed"
-                       and c["status"] != "reached_bound"})
-        lines += ["", f"**`{name}` did not run through** (sweep exit {r['exit_code']}). Last "
-                  "lines of its stderr:", "", "```"] + r["stderr_tail"] + ["```"]
-        if msgs:
-            lines += ["", "Reasons recorded per case: " + "; ".join(f"`{m}`" for m in msgs)]
+        bad = [c for c in results.get(name, []) if c["status"] not in ("completed", "reached_bound")]
+        msgs = sorted({re.sub(r"^.*?case[.]yaml: ", "", str(c.get("reason"))) for c in bad})
+        lines += ["", f"**`{name}` did not run through** (sweep exit {r['exit_code']}, "
+                  f"{len(bad)} failed case(s)); the reasons, without the case file's path:", "",
+                  "```"] + (msgs or r["stderr_tail"]) + ["```"]
     lines += ["", "![Variants](figures/paper_variants_force_depth.png)", ""]
     return lines
 
@@ -354,7 +371,8 @@ def symmetry_paragraph(results):
     return (
         "**Symmetry (paper-notes item 2).** A quarter model imposes mirror symmetry about x = 0 "
         "and y = 0. That is exact only for specially orthotropic lay-ups ([0/0]2S, [90/-90]2S = "
-        "[90]8, [0/90]2S); for those the `quarter` variant agrees with the full model: "
+        "[90]8, [0/90]2S); for those the `quarter` variant agrees with the full model (4 digits "
+        "shown): "
         + ratios(results, "quarter", ("[0/0]2S", "[90/-90]2S", "[0/90]2S")) + ". "
         "[theta/-theta]2S has D16, D26 != 0 (bending-twisting coupling): its deflection has no "
         "mirror symmetry, and shellindent refuses `mesh.symmetry: quarter` for it (an input "
@@ -363,20 +381,33 @@ def symmetry_paragraph(results):
         "angle plies cannot be reproduced, by design.")
 
 
+def secant_stiffnesses(case, spans=((0.0, 1.0), (2.0, 5.0), (5.0, 10.0))):
+    """'11.5 kN/mm over 0-1 mm, ...': the slope of T_N(h) over each span of depths."""
+    h, f = [r["depth_mm"] for r in case["rows"]], [r["force_N"] for r in case["rows"]]
+    out = []
+    for a, b in spans:
+        fa, fb = interpolate(h, f, a), interpolate(h, f, b)
+        if fa is not None and fb is not None:
+            out.append(f"{(fb - fa) / (b - a) / 1000:.1f} kN/mm over {a:g}-{b:g} mm")
+    return ", ".join(out) if out else "-"
+
+
 def kinematics_paragraph(results):
     lin = results.get("linear", [])
+    ref = next((c for c in results["default"] if c["layup"] == "[0/0]2S" and c["rows"]), None)
     return (
         "**Kinematics (paper eqs 73-80, paper-notes item 3).** 10 mm of travel is 2.6 times the "
         "shell thickness and 2.5 times the cap's rise (3.96 mm): far outside linear theory. The "
         "`linear` variant solves the paper's linear contact problem: "
-        + ratios(results, "linear", ("[0/0]2S", "[45/-45]2S", "[0/90]2S")) + "; its C2 is "
-        f"{c2_range(lin)} (force nearly proportional to depth, a little more from the growing "
-        f"contact patch), the nonlinear model's {c2_range(results['default'])}. The nonlinear "
-        "cap is softer than the linear one at small depths (the shallow cap begins to flatten) "
-        "and much stiffer at large depths (pressed flat, it carries the load by membrane "
-        "stretching). Neither model gives the paper's C2 of about 0.7, a softening law, for this "
-        "cap: softening needs a snap-through or a local, Hertz-like compliance, and the paper "
-        "models neither.")
+        + ratios(results, "linear", ("[0/0]2S", "[45/-45]2S", "[0/90]2S")) + ". Its C2 is "
+        f"{c2_range(lin)}, above 1 because the contact patch of the sphere grows with the depth "
+        "and spreads the load (a linear shell stiffens under a sphere); the nonlinear model's C2 "
+        f"is {c2_range(results['default'])}. The nonlinear cap is softer: as it is pressed "
+        "flat its curvature, which makes it stiffer than a plate, is lost, until membrane "
+        "stretching takes over (secant stiffness of [0/0]2S: "
+        + (secant_stiffnesses(ref) if ref else "-") + "). Neither model gives the paper's C2 "
+        "of about 0.7, a softening law over the whole range: that needs a snap-through or a "
+        "local, Hertz-like compliance, and the paper models neither.")
 
 
 def contact_paragraph(results):

@@ -52,6 +52,22 @@ def run_sweep(exe, study_yaml, out_dir, jobs, quick):
     return {"exit_code": code, "wall_s": wall, "stderr_tail": tail, "doc": doc, "dir": out_dir}
 
 
+def measured_wall_time(run):
+    """(wall seconds, when measured) of a sweep. A rerun over existing results skips the finished
+    cases (docs/sweeps.md, resuming) and takes no time; then the time of the run that computed
+    them is reported, kept in DIR/timing.json."""
+    path = os.path.join(run["dir"], "timing.json")
+    log = os.path.join(run["dir"], "sweep.log")
+    skipped = os.path.exists(log) and "already done, skipped" in open(log).read()
+    if skipped and os.path.exists(path):
+        t = load_json(path)
+        return t["wall_s"], t["measured"] + " (cases reused by this run)"
+    now = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
+    with open(path, "w") as f:
+        json.dump({"wall_s": run["wall_s"], "measured": now, "load_average": os.getloadavg()}, f)
+    return run["wall_s"], now
+
+
 def fit_cli(exe, csv_path, x, y, model, json_path, extra=()):
     """`shellindent fit CSV --model M --x X --y Y --json OUT` (docs/fitting.md); returns the JSON
     document, with the exit code under "exit_code" (0 = converged)."""
