@@ -105,19 +105,23 @@ def header(args, runs, timing, depth_max):
         "[theta/-theta]2S for theta = 0..90 by 15 deg and [0/90]2S. `default` is our model; "
         "each other variant changes one of our choices to the paper's.",
         "",
-        "| variant | study file | what changes | sweep exit | wall time (s) | measured |",
-        "|---|---|---|---:|---:|---|",
+        "| variant | study file | what changes | sweep exit | wall time (s) | CPU time (s) | "
+        "measured |",
+        "|---|---|---|---:|---:|---:|---|",
     ]
     for name, r in runs.items():
         lines.append(f"| `{name}` | `studies/{r['study']}` | {r['what']} | "
-                     f"{r['exit_code']} | {r['wall_s']:.1f} | {r['measured']} |")
+                     f"{r['exit_code']} | {r['wall_s']:.1f} | {num(r.get('cpu_s'), 4)} | {r['measured']} |")
     lines += [
         "",
         f"Wall time of all sweeps: {timing['sweeps_wall_s']:.1f} s with `-j {timing['jobs']}`, "
         f"post-processing (fits through `shellindent fit`, figures, this report) "
         f"{timing['post_processing_wall_s']:.1f} s. The machine (2 vCPU) was shared with other "
-        f"builds: load average at the end {load}, so the times are upper bounds "
-        "(docs/sweeps.md has the default sweep's CPU time).",
+        "builds; the 'measured' column gives the 1-minute load average when each sweep ended "
+        f"(at the end of this script: {load}), so the wall times are upper bounds. The CPU time "
+        "(of the cases, user + system) is less sensitive to the load; it is '-' for results "
+        "computed before this script recorded it. On an idle machine the default sweep took "
+        "83 s user + 12 s system CPU (docs/sweeps.md), i.e. about 50 s wall with `-j 2`.",
         "",
     ]
     return lines

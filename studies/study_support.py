@@ -8,6 +8,7 @@ import json
 import math
 import os
 import re
+import resource
 import subprocess
 import time
 
@@ -28,12 +29,20 @@ def default_exe():
     return os.path.join(SOURCE_DIR, "build", "shellindent")
 
 
+def children_cpu_seconds():
+    """User + system CPU time of the finished child processes (the cases of a sweep are children
+    of the sweep, which waits for them): a measure of the work less sensitive to the load."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
 def run_cli(exe, args, log_path=None):
     """Runs `exe args...`; returns (exit code, wall seconds, stdout, stderr). Never raises on a
     non-zero exit: the caller decides (a variant that fails is a result to report)."""
-    start = time.monotonic()
+    start, cpu0 = time.monotonic(), children_cpu_seconds()
     proc = subprocess.run([exe] + args, capture_output=True, text=True)
     wall = time.monotonic() - start
+    run_cli.last_cpu_s = children_cpu_seconds() - cpu0
     if log_path:
         with open(log_path, "w") as f:
             f.write("$ " + " ".join([exe] + args) + "\n" + proc.stdout + proc.stderr)
@@ -46,10 +55,12 @@ def run_sweep(exe, study_yaml, out_dir, jobs, quick):
     os.makedirs(out_dir, exist_ok=True)
     args = ["sweep", study_yaml, "--out", out_dir, "-j", str(jobs)] + (["--quick"] if quick else [])
     code, wall, _, err = run_cli(exe, args, os.path.join(out_dir, "sweep.log"))
+    cpu = run_cli.last_cpu_s
     doc_path = os.path.join(out_dir, "sweep.json")
     doc = load_json(doc_path) if code in (0, 1) and os.path.exists(doc_path) else None
     tail = [line for line in err.strip().splitlines() if line.strip()][-3:]
-    return {"exit_code": code, "wall_s": wall, "stderr_tail": tail, "doc": doc, "dir": out_dir}
+    return {"exit_code": code, "wall_s": wall, "cpu_s": cpu, "stderr_tail": tail, "doc": doc,
+            "dir": out_dir}
 
 
 def measured_wall_time(run):
@@ -61,11 +72,13 @@ def measured_wall_time(run):
     skipped = os.path.exists(log) and "already done, skipped" in open(log).read()
     if skipped and os.path.exists(path):
         t = load_json(path)
-        return t["wall_s"], t["measured"] + " (cases reused by this run)"
+        run["cpu_s"] = t.get("cpu_s")
+        return t["wall_s"], f"{t['measured']}, load {t['load_average'][0]:.1f} (reused)"
     now = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     with open(path, "w") as f:
-        json.dump({"wall_s": run["wall_s"], "measured": now, "load_average": os.getloadavg()}, f)
-    return run["wall_s"], now
+        json.dump({"wall_s": run["wall_s"], "cpu_s": run["cpu_s"], "measured": now,
+                   "load_average": os.getloadavg()}, f)
+    return run["wall_s"], f"{now}, load {os.getloadavg()[0]:.1f}"
 
 
 def fit_cli(exe, csv_path, x, y, model, json_path, extra=()):
