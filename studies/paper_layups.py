@@ -31,9 +31,9 @@ import time
 import paper_data
 import paper_figures
 import paper_report
-from study_support import (SOURCE_DIR, STUDIES_DIR, StudyError, case_dirs, column, default_exe,
-                           fit_cli, interpolate, load_path, measured_wall_time, run_sweep, theta_of,
-                           write_csv)
+from study_support import (C2_PHYSICAL_RANGE, SOURCE_DIR, STUDIES_DIR, StudyError, case_dirs,
+                           column, default_exe, fit_cli, interpolate, load_path,
+                           measured_wall_time, run_sweep, theta_of, write_csv)
 
 # Variant name -> (study file in studies/, what it changes with respect to the default).
 VARIANTS = {
@@ -46,7 +46,6 @@ VARIANTS = {
 
 GRID_STEP_MM = 0.1  # path.step of the studies: the paper's depth grid (P9)
 REPORT_DEPTHS_MM = (1.0, 5.0, 10.0)  # forces tabulated per variant
-C2_PHYSICAL_RANGE = (0.9, 3.0)  # linear contact gives ~1; membrane stiffening at most ~3 (w^3)
 
 
 def parse_args():

@@ -14,7 +14,8 @@ from study_support import (clt_bending_stiffness, effective_bending_stiffness, i
                            poly_coefficients, poly_value, write_csv)
 
 TABLE_COLUMNS = ["layup", "theta_deg", "status", "fit_status", "C1", "C1_lo", "C1_hi", "C2",
-                 "C2_lo", "C2_hi", "R2", "grid_points", "C1_points", "C2_points", "R2_points", "force_1mm_N", "force_5mm_N", "force_10mm_N",
+                 "C2_lo", "C2_hi", "R2", "grid_points", "C1_points", "C2_points", "R2_points",
+                 "force_1mm_N", "force_5mm_N", "force_10mm_N",
                  "force_at_depth_max_N", "energy_J", "work_J", "critical_k11_depth_mm",
                  "critical_k11_force_N", "critical_k22_depth_mm", "critical_k22_force_N"]
 
@@ -275,7 +276,8 @@ def critical_section(cases):
         "The inflections depend on the mesh (docs/sweeps.md: at 1 mm the [0/90]2S path has them "
         "at 1.32 and 1.64 mm, at 1.25 mm none). The paper's Fig 11 has the curvatures growing "
         "linearly with the depth; ours do so only over the first 1-2 mm and then level off as the "
-        "cap is pressed against the sphere and the apex region conforms to it. As in the paper, k12 + k21 stays zero for the cross ply (no bending-twisting "
+        "cap is pressed against the sphere and the apex region conforms to it. As in the paper, "
+        "k12 + k21 stays zero for the cross ply (no bending-twisting "
         "coupling) and small for the angle plies.",
         "",
         "![T_N against the curvatures](figures/paper_fig10_force_curvature.png)",

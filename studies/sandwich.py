@@ -41,9 +41,10 @@ import yaml
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from study_support import (SOURCE_DIR, STUDIES_DIR, case_dirs, clt_bending_stiffness,  # noqa: E402
-                           column, default_exe, effective_bending_stiffness, interpolate,
-                           load_path, measured_wall_time, run_sweep, write_csv)
+from study_support import (  # noqa: E402
+    C2_PHYSICAL_RANGE, SOURCE_DIR, STUDIES_DIR, case_dirs, clt_bending_stiffness, column,
+    default_exe, effective_bending_stiffness, interpolate, load_path, measured_wall_time,
+    run_sweep, write_csv)
 
 CASE_FILE = os.path.join(STUDIES_DIR, "sandwich_cap.yaml")
 UNITS = {"mm": 1.0, "MPa": 1.0, "GPa": 1e3}
@@ -276,8 +277,8 @@ def main():
     for c in cases:
         if c.get("fit_status") != "converged":
             problems.append(f"{c.get('kinematics')}: fit {c.get('fit_status')}")
-        elif not 0.9 <= c["C2"] <= 3.0:  # as studies/paper_layups.py: linear ~1, membrane <= 3
-            problems.append(f"{c.get('kinematics')}: C2 = {c['C2']:.4g} outside [0.9, 3]")
+        elif not C2_PHYSICAL_RANGE[0] <= c["C2"] <= C2_PHYSICAL_RANGE[1]:
+            problems.append(f"{c.get('kinematics')}: C2 = {c['C2']:.4g} outside {C2_PHYSICAL_RANGE}")
     if not 0 < est["k_winkler_N_per_mm"] < est["k_halfspace_N_per_mm"] * 10:
         problems.append("local stiffness estimates are not positive and comparable")
     write_csv(os.path.join(out, "estimates.csv"), list(table[0]) if table else ["force_N"], table)

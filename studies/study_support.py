@@ -20,6 +20,12 @@ SOURCE_DIR = os.path.dirname(STUDIES_DIR)
 PAPER_PLY = {"E1": 130e3, "E2": 10e3, "G12": 6e3, "nu12": 0.3}
 
 
+# Plausible exponents of T = C1 h^C2 for a shell under a sphere (the smoke tests' check): a
+# point load on a linear shell gives 1, the growing contact patch a little more, membrane
+# stiffening at most 3 (the w^3 term of a clamped plate, ../shared/benchmarks/point-loads.md 4.2).
+C2_PHYSICAL_RANGE = (0.9, 3.0)
+
+
 class StudyError(RuntimeError):
     """A study step failed; the message says which and why (the script exits with status 1)."""
 
