@@ -12,7 +12,6 @@ the C1, C2 plots (default: the first varied key with more than one value); lay-u
 import csv
 import json
 import os
-import re
 import sys
 
 import matplotlib
@@ -20,11 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def theta_of(layup):
-    """theta of "[theta/-theta]2S", else None."""
-    m = re.fullmatch(r"\[(\d+)/-?(\d+)\]2S", layup.strip())  # [0/0]2S is theta = 0
-    return float(m.group(1)) if m and m.group(1) == m.group(2) else None
+from study_support import theta_of  # noqa: E402  (lay-up -> theta, shared with the studies)
 
 
 def x_value(case, key):

@@ -1,0 +1,238 @@
+#!/usr/bin/python3
+"""The source paper's lay-up study, end to end (issue #6): Table 2, eqs 82-85 and Figs 7-12.
+
+What it reproduces: the clamped carbon/epoxy cap of the paper (studies/paper_cap.yaml) indented
+0 -> 10 mm by the 12.7 mm sphere for [theta/-theta]2S, theta = 0..90 by 15 deg, and [0/90]2S:
+  - the power law T_N = C1 h^C2 per lay-up with 95 % intervals (paper Table 2, eq 81),
+  - cubic fits C1(theta), C2(theta) (eqs 82-83), coefficients for theta in degrees AND radians,
+  - the strain energy at 10 mm against theta with the polynomial degree chosen by leave-one-out
+    cross validation (eq 85),
+  - T_N against the apex curvatures k11, k12, k22 with the critical force (the inflection, paper
+    Figs 10) and the curvatures against the depth (Fig 11),
+and the same study with each of the paper's modelling choices in turn (variants): linear
+kinematics, contact on the mid-surface, a quarter model, the paper's bernstein4 element.
+
+Run (from the source directory, after the build of README.md):
+    studies/paper_layups.py                  # all variants, -j 2; writes docs/ (report, figures)
+    studies/paper_layups.py --quick          # smoke test: coarse mesh, 1 mm; writes only --out
+    studies/paper_layups.py --variants default linear -j 2 --exe build/src/app/shellindent
+Writes: OUT/<variant>/ (each sweep: sweep.csv/json, cases/*/path.csv ...), OUT/table2.csv/json,
+OUT/theta_fits.csv, OUT/*.fit-*.json, OUT/variants.csv, OUT/summary.json; the report
+docs/paper-reproduction.md and its figures docs/figures/paper_*.png (with --quick, or with
+--report-dir, the report and figures go to OUT/report/ instead). Exit status 0 if every check
+passed, 1 otherwise (the reasons are printed). Needs /usr/bin/python3 with matplotlib.
+"""
+import argparse
+import math
+import os
+import sys
+import time
+
+import paper_data
+import paper_figures
+import paper_report
+from study_support import (C2_PHYSICAL_RANGE, SOURCE_DIR, STUDIES_DIR, StudyError, case_dirs,
+                           column, default_exe, fit_cli, interpolate, load_path,
+                           measured_wall_time, run_sweep, theta_of, write_csv)
+
+# Variant name -> (study file in studies/, what it changes with respect to the default).
+VARIANTS = {
+    "default": ("paper_layups.yaml", "ours: MITC4, nonlinear, outer-surface contact, full model"),
+    "linear": ("paper_layups_linear.yaml", "linear kinematics (the paper's eqs 73-80)"),
+    "mid": ("paper_layups_mid.yaml", "contact on the mid-surface (the paper's choice)"),
+    "quarter": ("paper_layups_quarter.yaml", "quarter model (specially orthotropic lay-ups only)"),
+    "bernstein4": ("paper_layups_bernstein4.yaml", "the paper's Bernstein element (bernstein4)"),
+}
+
+GRID_STEP_MM = 0.1  # path.step of the studies: the paper's depth grid (P9)
+REPORT_DEPTHS_MM = (1.0, 5.0, 10.0)  # forces tabulated per variant
+
+
+def parse_args():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--quick", action="store_true", help="smoke test: the studies' quick keys")
+    p.add_argument("--exe", default=default_exe(), help="shellindent executable")
+    p.add_argument("--out", help="results directory (default results/paper_layups_study[_quick])")
+    p.add_argument("-j", "--jobs", type=int, default=2, help="cases run at once")
+    p.add_argument("--variants", nargs="+", choices=list(VARIANTS),
+                   help="variants to run (default: all; with --quick: default and linear)")
+    p.add_argument("--report-dir", help="where the report and figures go (default docs/, "
+                   "or OUT/report with --quick)")
+    return p.parse_args()
+
+
+# ---- 1. Run the sweeps ----------------------------------------------------------------------
+
+def run_variants(args, out):
+    """Runs each variant's sweep; returns {variant: sweep dict (study_support.run_sweep)}."""
+    runs = {}
+    for name in args.variants:
+        study = os.path.join(STUDIES_DIR, VARIANTS[name][0])
+        print(f"paper_layups: sweep {name} ({VARIANTS[name][0]}) ...", file=sys.stderr, flush=True)
+        runs[name] = run_sweep(args.exe, study, os.path.join(out, name), args.jobs, args.quick)
+        r = runs[name]
+        r["study"], r["what"] = VARIANTS[name]
+        r["wall_s"], r["measured"] = measured_wall_time(r)
+        print(f"paper_layups: sweep {name}: exit {r['exit_code']}, {r['wall_s']:.1f} s",
+              file=sys.stderr, flush=True)
+    return runs
+
+
+# ---- 2. Per-case results --------------------------------------------------------------------
+
+def grid_fit(exe, case_dir, depth_max):
+    """T = C1 h^C2 fitted to the force on the paper's 0.1 mm depth grid (path_grid.csv of a
+    pseudo-arclength run, path.csv of a linear run, which is on the grid; docs/results.md), the
+    paper's procedure (P9, eq 81). The sweep's own fit uses the adaptive continuation points,
+    whose spacing changes from run to run and weights the fit (report: Table 2)."""
+    grid = os.path.join(case_dir, "path_grid.csv")
+    data = grid if os.path.exists(grid) else os.path.join(case_dir, "path.csv")
+    if not os.path.exists(data):
+        return {}
+    doc = fit_cli(exe, data, "depth_mm", "force_N", "power",
+                  os.path.join(case_dir, "grid.fit-power.json"),
+                  [f"--range={GRID_STEP_MM}:{depth_max}"])
+    out = {"fit_status": doc["status"], "R2": doc["statistics"]["r_squared"],
+           "grid_points": doc["statistics"]["points"]}
+    for p in doc["parameters"]:
+        out.update({p["name"]: p["value"], p["name"] + "_lo": p["ci_low"],
+                    p["name"] + "_hi": p["ci_high"]})
+    return out
+
+
+def case_results(exe, run, depth_max):
+    """One dict per case of a sweep: lay-up, status, the power-law fit on the 0.1 mm grid (and
+    the sweep's fit on the path points, *_points), forces at the report depths, energy and work
+    at depth_max, critical forces, and the path itself (for the figures)."""
+    doc = run["doc"]
+    if doc is None:
+        return []
+    dirs = case_dirs(run["dir"])
+    cases = []
+    for c in doc["cases"]:
+        case_dir = dirs.get(int(c["case"]), "")
+        rows, events = load_path(case_dir)
+        depth = column(rows, "depth_mm") if rows else []
+        at = {h: interpolate(depth, column(rows, "force_N"), h) if rows else None
+              for h in REPORT_DEPTHS_MM + (depth_max,)}
+        energy = interpolate(depth, column(rows, "energy_Nmm"), depth_max) if rows else None
+        work = interpolate(depth, column(rows, "work_Nmm"), depth_max) if rows else None
+        cases.append({
+            "layup": c.get("laminate.layup"), "theta_deg": theta_of(c.get("laminate.layup")),
+            "status": c.get("status"), "reason": c.get("reason"),
+            "fit_status": None, "R2": None,
+            **{k + "_points": c.get(k) for k in ("C1", "C2", "R2")},
+            **(grid_fit(exe, case_dir, depth_max) if rows else {}),
+            **{f"force_{h:g}mm_N": at[h] for h in REPORT_DEPTHS_MM},
+            "force_at_depth_max_N": at[depth_max],
+            "energy_J": energy / 1000 if energy is not None else None,
+            "work_J": work / 1000 if work is not None else None,
+            **{k: c.get(k) for k in ("critical_k11_depth_mm", "critical_k11_force_N",
+                                     "critical_k22_depth_mm", "critical_k22_force_N")},
+            "rows": rows, "events": events})
+    return cases
+
+
+# ---- 3. Fits against the lay-up angle -------------------------------------------------------
+
+def theta_fits(exe, cases, out):
+    """Cubics C1(theta), C2(theta) (eqs 82-83) in degrees and radians, the energy polynomial
+    (eq 85) with the degree chosen by LOOCV, and the same cubic fitted to the paper's own Table 2
+    (to check the paper's eq 82 against its table). All through `shellindent fit`."""
+    angle = sorted((c for c in cases if c["theta_deg"] is not None and c.get("C1") not in (None, "")),
+                   key=lambda c: c["theta_deg"])
+    if len(angle) < 5:
+        raise StudyError(f"only {len(angle)} angle-ply lay-ups with a fit; need 5 for a cubic")
+    rows = [{"theta_deg": c["theta_deg"], "theta_rad": math.radians(c["theta_deg"]),
+             "C1": c["C1"], "C2": c["C2"], "energy_J": c["energy_J"], "work_J": c["work_J"],
+             "paper_C1": paper_data.TABLE2[c["layup"]][0] if c["layup"] in paper_data.TABLE2 else None,
+             "paper_C2": paper_data.TABLE2[c["layup"]][1] if c["layup"] in paper_data.TABLE2 else None}
+            for c in angle]
+    table = os.path.join(out, "theta_fits.csv")
+    write_csv(table, list(rows[0]), rows)
+    fits = {}
+    for y in ("C1", "C2"):
+        for x in ("theta_deg", "theta_rad"):
+            fits[f"{y}_{x}"] = fit_cli(exe, table, x, y, "poly",
+                                       os.path.join(out, f"theta_fits.fit-{y}-{x}.json"),
+                                       ["--degree", "3"])
+        fits[f"paper_{y}_theta_rad"] = fit_cli(
+            exe, table, "theta_rad", f"paper_{y}",
+            "poly", os.path.join(out, f"theta_fits.fit-paper_{y}-theta_rad.json"), ["--degree", "3"])
+    fits["energy"] = fit_cli(exe, table, "theta_deg", "energy_J", "poly",
+                             os.path.join(out, "theta_fits.fit-energy.json"), ["--degree", "auto"])
+    return rows, fits
+
+
+# ---- 4. Checks (the smoke test's assertions) ------------------------------------------------
+
+def checks(runs, results, fits):
+    """Reasons the study is not sound; empty if all is well. Only the default variant must run
+    through: a failing variant is a result for the report, not an error of the study."""
+    problems = []
+    default = results.get("default", [])
+    if runs["default"]["exit_code"] != 0 or not default:
+        problems.append(f"default sweep exit {runs['default']['exit_code']}: "
+                        + " | ".join(runs["default"]["stderr_tail"]))
+    for c in default:
+        if c["fit_status"] != "converged":
+            problems.append(f"{c['layup']}: power-law fit {c['fit_status']}")
+        elif not C2_PHYSICAL_RANGE[0] <= c["C2"] <= C2_PHYSICAL_RANGE[1]:
+            problems.append(f"{c['layup']}: C2 = {c['C2']:.4g} outside {C2_PHYSICAL_RANGE}")
+        if c["energy_J"] is not None and c["work_J"] is not None and c["work_J"] > 0:
+            # paper-notes item 8: indenter work = strain energy (trapezoidal rule: a few %).
+            if abs(c["energy_J"] - c["work_J"]) > 0.05 * c["work_J"]:
+                problems.append(f"{c['layup']}: energy {c['energy_J']:.4g} J vs work "
+                                f"{c['work_J']:.4g} J differ by more than 5 %")
+    for name, doc in fits.items():
+        if doc["exit_code"] != 0:
+            problems.append(f"fit {name}: {doc['status']} ({doc['reason']})")
+    return problems
+
+
+# ---- 5. Main --------------------------------------------------------------------------------
+
+def main():
+    args = parse_args()
+    if not os.path.exists(args.exe):
+        sys.exit(f"error: no executable {args.exe} (build first, or give --exe)")
+    args.variants = args.variants or (["default", "linear"] if args.quick else list(VARIANTS))
+    if "default" not in args.variants:
+        args.variants.insert(0, "default")
+    out = os.path.abspath(args.out or os.path.join(
+        SOURCE_DIR, "results", "paper_layups_study" + ("_quick" if args.quick else "")))
+    report_dir = os.path.abspath(args.report_dir or (
+        os.path.join(out, "report") if args.quick else os.path.join(SOURCE_DIR, "docs")))
+    figures_dir = os.path.join(report_dir, "figures")
+    os.makedirs(figures_dir, exist_ok=True)
+    depth_max = 1.0 if args.quick else 10.0  # the studies' path.depth_max (quick: 1 mm)
+
+    start = time.monotonic()
+    runs = run_variants(args, out)
+    sweeps_wall = time.monotonic() - start
+    results = {name: case_results(args.exe, run, depth_max) for name, run in runs.items()}
+    try:
+        theta_rows, fits = theta_fits(args.exe, results["default"], out)
+    except StudyError as e:
+        sys.exit(f"error: {e}")
+
+    paper_report.write_tables(out, results)
+    figures = paper_figures.draw_all(results, theta_rows, fits, figures_dir, depth_max)
+    problems = checks(runs, results, fits)
+    post_wall = time.monotonic() - start - sweeps_wall
+    timing = {"sweeps_wall_s": sum(r["wall_s"] for r in runs.values()), "post_processing_wall_s": post_wall,
+              "per_variant_wall_s": {n: r["wall_s"] for n, r in runs.items()},
+              "jobs": args.jobs, "load_average": os.getloadavg()}
+    paper_report.write_summary(out, args, runs, results, fits, timing, problems)
+    report = paper_report.write_report(report_dir, figures, args, runs, results, theta_rows, fits,
+                                       timing, problems, depth_max)
+    print(f"paper_layups: wrote {report} and {len(figures)} figures; sweeps {sweeps_wall:.1f} s, "
+          f"post-processing {post_wall:.1f} s", file=sys.stderr)
+    if problems:
+        print("paper_layups: CHECKS FAILED:\n  " + "\n  ".join(problems), file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
