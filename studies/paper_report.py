@@ -136,11 +136,11 @@ def table2_section(cases):
         "interpolated linearly between continuation points; `shellindent fit path_grid.csv "
         "--model power --range=0.1:10`: nonlinear least squares on T_N in N, 95 % intervals from "
         "the linearisation, docs/fitting.md). The paper's C1 is its force at h = 1 mm. The last "
-        "column is the sweep's own fit (sweep.csv) to the adaptive continuation points: "
-        "the same curve sampled differently gives a different C2, because one power law "
-        "fits the path only roughly (R^2 about 0.97: the force grows faster than any single "
-        "power as the cap is pressed flat, see Kinematics below); e.g. the quarter and the full "
-        "[0/0]2S models give the same forces to 4 digits but different point sets.",
+        "column is the sweep's own fit (sweep.csv), made on the same 0.1 mm grid inside "
+        "`shellindent sweep`: a cross-check of the two fitting routes. One power law fits the path "
+        "only roughly (R^2 about 0.97: the force grows faster than any single power as the cap is "
+        "pressed flat, see Kinematics below), so C2 depends on how the curve is sampled: fitted to "
+        "the adaptive continuation points instead, [0/0]2S gave C2 = 1.79 instead of 1.61.",
         "",
         "| lay-up | paper C1 | paper C2 | our C1 [95 %] (N/mm^C2) | our C2 [95 %] | R^2 | "
         "our T_N at 1 mm (kN) | our T_N at 10 mm (kN) | paper T at 10 mm (kN) | sweep fit C1, C2 |",
