@@ -21,6 +21,16 @@ struct IndentationProblem::CandidateSlots {
   int diagonal = -1;            // (multiplier, multiplier)
 };
 
+// Interpolated traction (IndentationOptions): the weighted gaps over their weights,
+// g = g0 - h + C x, and the Jacobian's value slots of C's entries.
+struct IndentationProblem::WeightedGaps {
+  Eigen::SparseMatrix<double, Eigen::RowMajor> C;  // C~_i / w_i, candidates x free dofs
+  Eigen::VectorXd g0;                              // g~0_i / w_i, mm
+  Eigen::VectorXd w;                               // w_i, mm^2
+  std::vector<int> column;                         // per entry (i, j): slot of (j, multiplier i)
+  std::vector<int> row;                            // per entry (i, j): slot of (multiplier i, j)
+};
+
 namespace {
 
 // A gap this large stands for "beside the indenter's path": phi then pins lambda to zero.
@@ -51,6 +61,8 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
       assembler_(model.mesh, dofs_, *model.element, model.law, model.kinematics, options_.threads),
       chart_(model.mesh, dofs_),
       shell_(assembler_, chart_) {
+  SI_REQUIRE(!options_.interpolated_traction || model.kinematics == Kinematics::kLinear,
+             "the interpolated contact traction is defined for linear kinematics only");
   const Mesh& mesh = model.mesh;
   const int nn = mesh.num_nodes();
   geometry_.resize(nn);
@@ -129,7 +141,21 @@ IndentationProblem::~IndentationProblem() = default;
 void IndentationProblem::choose_candidates(const std::vector<int>& nodes) {
   candidates_ = nodes;
   touch_guess_.assign(candidates_.size(), t0_);
+  if (options_.interpolated_traction) build_weighted_gaps();
   build_pattern();
+}
+
+void IndentationProblem::build_weighted_gaps() {
+  const InterpolatedContact ic = integrate_interpolated_contact(
+      model_.mesh, assembler_, *model_.element,
+      ContactFace{indenter_, direction_, options_.contact_offset, t0_}, candidates_,
+      options_.interpolated);
+  weighted_ = std::make_unique<WeightedGaps>();
+  const Eigen::VectorXd inverse = ic.w.cwiseInverse();
+  weighted_->C = inverse.asDiagonal() * ic.C;
+  weighted_->C.makeCompressed();
+  weighted_->g0 = inverse.cwiseProduct(ic.g0);
+  weighted_->w = ic.w;
 }
 
 void IndentationProblem::restore_candidates(const std::vector<int>& nodes) {
@@ -158,6 +184,13 @@ void IndentationProblem::build_pattern() {
     }
     t.emplace_back(m, m, 0.0);
   }
+  if (weighted_)
+    for (int i = 0; i < nc; ++i)
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(weighted_->C, i); it;
+           ++it) {
+        t.emplace_back(static_cast<int>(it.col()), nf + i, 0.0);
+        t.emplace_back(nf + i, static_cast<int>(it.col()), 0.0);
+      }
   jacobian_ = SparseMatrix(nf + nc, nf + nc);
   jacobian_.setFromTriplets(t.begin(), t.end());
   jacobian_.makeCompressed();
@@ -178,10 +211,23 @@ void IndentationProblem::build_pattern() {
     }
     s.diagonal = value_slot(jacobian_, m, m);
   }
-  if (options_.linear_solver == kPreconditionedKrylov) {
+  if (weighted_) {
+    weighted_->column.clear();
+    weighted_->row.clear();
+    for (int i = 0; i < nc; ++i)
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(weighted_->C, i); it;
+           ++it) {
+        weighted_->column.push_back(value_slot(jacobian_, static_cast<int>(it.col()), nf + i));
+        weighted_->row.push_back(value_slot(jacobian_, nf + i, static_cast<int>(it.col())));
+      }
+  }
+  // The Krylov solver condenses rows on one node's dofs: not the weighted rows, which span the
+  // node's elements (the direct LU then).
+  if (options_.linear_solver == kPreconditionedKrylov && !weighted_) {
     if (!krylov_) krylov_ = std::make_unique<ContactJacobianSolver>(kappa_, "umfpack");
   } else {
-    solver_ = make_linear_solver(options_.linear_solver);  // analyses the new pattern
+    solver_ = make_linear_solver(
+        options_.linear_solver == kPreconditionedKrylov ? "umfpack" : options_.linear_solver);
   }
 }
 
@@ -225,6 +271,12 @@ NodeGap IndentationProblem::gap(int i, const std::vector<NodeState>& s, double h
   return g;
 }
 
+double IndentationProblem::gap_value(int i, const cont::Vector& z, const std::vector<NodeState>& s,
+                                     double h) const {
+  if (!weighted_) return gap(i, s, h, false).gap;
+  return weighted_->g0[i] - h + weighted_->C.row(i).dot(z.head(chart_.size()));
+}
+
 // r_free = r(x) - sum lambda_i G_i on the free dofs; returns the node states at z. Nonlinear
 // kinematics: the force and tangent at x stay in shell_ for factorize().
 const std::vector<NodeState>& IndentationProblem::shell_terms(const cont::Vector& z, double h,
@@ -239,6 +291,10 @@ const std::vector<NodeState>& IndentationProblem::shell_terms(const cont::Vector
     r_free = dofs_.restrict_to_free(shell_.at(x).internal_force);
   }
   const std::vector<NodeState>& states = linear ? linear_states_ : shell_.states();
+  if (weighted_) {
+    r_free -= weighted_->C.transpose() * z.tail(candidates_.size());
+    return states;
+  }
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const double lambda = z[nf + static_cast<int>(i)];
     if (lambda == 0.0) continue;
@@ -263,9 +319,8 @@ bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector&
   F.resize(size());
   F.head(nf) = r;
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    const NodeGap g = gap(static_cast<int>(i), *states, h, false);
-    F[nf + static_cast<int>(i)] =
-        ncp(options_.ncp, z[nf + static_cast<int>(i)], kappa_ * g.gap).value;
+    const int k = static_cast<int>(i);
+    F[nf + k] = ncp(options_.ncp, z[nf + k], kappa_ * gap_value(k, z, *states, h)).value;
   }
   return F.allFinite();
 }
@@ -287,7 +342,16 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   std::fill(J, J + jacobian_.nonZeros(), 0.0);
   for (int k = 0; k < K.nonZeros(); ++k) J[k_to_j_[k]] = K.valuePtr()[k];
   std::vector<ContactJacobianRow> rows(krylov_ ? candidates_.size() : 0);
-  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+  for (std::size_t i = 0; weighted_ && i < candidates_.size(); ++i) {
+    const int k = static_cast<int>(i);
+    const NcpValue phi = ncp(options_.ncp, z[nf + k], kappa_ * gap_value(k, z, *states, h));
+    for (int e = weighted_->C.outerIndexPtr()[k]; e < weighted_->C.outerIndexPtr()[k + 1]; ++e) {
+      J[weighted_->column[e]] -= weighted_->C.valuePtr()[e];
+      J[weighted_->row[e]] += phi.d_b * kappa_ * weighted_->C.valuePtr()[e];
+    }
+    J[slots_[i].diagonal] += phi.d_a;
+  }
+  for (std::size_t i = 0; !weighted_ && i < candidates_.size(); ++i) {
     const double lambda = z[nf + static_cast<int>(i)];
     const NodeGap g = gap(static_cast<int>(i), *states, h, nonlinear && lambda != 0.0);
     const NcpValue phi = ncp(options_.ncp, lambda, kappa_ * g.gap);
@@ -336,9 +400,9 @@ bool IndentationProblem::residual_p(const cont::Vector& z, double h, cont::Vecto
   std::vector<NodeState> s = node_states(z);
   out = cont::Vector::Zero(size());
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    const NodeGap g = gap(static_cast<int>(i), s, h, false);
-    if (!g.hits) continue;
-    const NcpValue phi = ncp(options_.ncp, z[nf + static_cast<int>(i)], kappa_ * g.gap);
+    const int k = static_cast<int>(i);
+    if (!weighted_ && !gap(k, s, h, false).hits) continue;
+    const NcpValue phi = ncp(options_.ncp, z[nf + k], kappa_ * gap_value(k, z, s, h));
     out[nf + static_cast<int>(i)] = -phi.d_b * kappa_;
   }
   return true;
@@ -384,7 +448,7 @@ std::vector<int> IndentationProblem::signature(const cont::Vector& z, double h) 
   const std::vector<NodeState> s = node_states(z);
   std::vector<int> active(candidates_.size());
   for (std::size_t i = 0; i < candidates_.size(); ++i)
-    active[i] = z[nf + static_cast<int>(i)] > kappa_ * gap(static_cast<int>(i), s, h, false).gap;
+    active[i] = z[nf + static_cast<int>(i)] > kappa_ * gap_value(static_cast<int>(i), z, s, h);
   return active;
 }
 
@@ -418,6 +482,7 @@ bool IndentationProblem::adapt(cont::Vector& z, double h) {
 
 SparseMatrix IndentationProblem::contact_matrix() const {
   SI_REQUIRE(model_.kinematics == Kinematics::kLinear, "contact_matrix: linear kinematics only");
+  if (weighted_) return SparseMatrix(weighted_->C);
   const std::vector<NodeState> s = node_states(initial_point());
   std::vector<Eigen::Triplet<double, int>> t;
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
@@ -435,7 +500,7 @@ Eigen::VectorXd IndentationProblem::reference_gaps() const {
   const std::vector<NodeState> s = node_states(initial_point());
   Eigen::VectorXd g0(candidates_.size());
   for (std::size_t i = 0; i < candidates_.size(); ++i)
-    g0[static_cast<Eigen::Index>(i)] = gap(static_cast<int>(i), s, 0.0, false).gap;
+    g0[static_cast<Eigen::Index>(i)] = gap_value(static_cast<int>(i), initial_point(), s, 0.0);
   return g0;
 }
 
@@ -520,15 +585,17 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const int n = candidates_[i];
     const double lambda = z[nf + static_cast<int>(i)];
-    const NodeGap g = gap(static_cast<int>(i), s, h, false);
+    const int k = static_cast<int>(i);
+    const bool hits = weighted_ || gap(k, s, h, false).hits;
+    const double g = gap_value(k, z, s, h);
     out.nodes.push_back(n);
     out.multipliers.push_back(lambda);
-    out.gaps.push_back(g.hits ? g.gap : std::numeric_limits<double>::infinity());
-    out.pressures.push_back(lambda / tributary_area_[n]);
+    out.gaps.push_back(hits ? g : std::numeric_limits<double>::infinity());
+    out.pressures.push_back(lambda / (weighted_ ? weighted_->w[k] : tributary_area_[n]));
     out.min_multiplier = std::min(out.min_multiplier, lambda);
-    if (g.hits) {
-      out.min_gap = std::min(out.min_gap, g.gap);
-      out.max_complementarity = std::max(out.max_complementarity, std::abs(lambda * g.gap));
+    if (hits) {
+      out.min_gap = std::min(out.min_gap, g);
+      out.max_complementarity = std::max(out.max_complementarity, std::abs(lambda * g));
     }
   }
   cached_z_ = z;

@@ -28,6 +28,7 @@
 
 #include "analysis/chart_assembly.hpp"
 #include "analysis/contact_jacobian_solver.hpp"
+#include "analysis/interpolated_contact.hpp"
 #include "analysis/shell_model.hpp"
 #include "contact/indenter.hpp"
 #include "contact/ncp_function.hpp"
@@ -49,8 +50,17 @@ struct IndentationOptions {
   NcpFunction ncp = NcpFunction::kFischerBurmeister;
   // The Jacobian's solver: kPreconditionedKrylov (contact_jacobian_solver.hpp; an LU of the
   // Jacobian where it cannot help) or a direct LU, "umfpack" | "klu" (the Jacobian is unsymmetric).
+  // The interpolated traction's rows span several nodes: it always uses the direct LU.
   std::string linear_solver = "cholesky_gmres";
   int threads = 0;  // element assembly (0 = OpenMP default)
+  // The paper's option (contact.traction: interpolated; interpolated_contact.hpp), linear
+  // kinematics only: the traction is interpolated from nodal values t-bar_i and the gaps are the
+  // weighted gaps. The unknowns stay nodal forces, lambda_i = t-bar_i w_i (N), and the gap of
+  // candidate i is its weighted gap over w_i, (g~0_i - h w_i + C~_i x) / w_i (mm): a positive
+  // scaling of the paper's rows that leaves the solution, t-bar = lambda / w, unchanged and lets
+  // kappa, the force scale and the fast path apply as they are.
+  bool interpolated_traction = false;
+  InterpolatedContactOptions interpolated;
 };
 
 // Everything a user wants at one converged point (whole-shell values: symmetry applied).
@@ -69,7 +79,8 @@ struct IndentationState {
   std::vector<int> nodes;           // candidate nodes
   std::vector<double> multipliers;  // lambda per candidate, N
   std::vector<double> gaps;         // g per candidate, mm
-  std::vector<double> pressures;    // lambda / tributary area per candidate, MPa
+  std::vector<double> pressures;    // lambda / tributary area per candidate, MPa (interpolated
+                                    // traction: lambda / w = t-bar, the nodal traction)
 };
 
 // Work done so far, for benchmarks and the run summary.
@@ -119,7 +130,8 @@ class IndentationProblem : public cont::Problem {
 
   // Linear kinematics only (the fast path, linear_indentation.hpp): the reference tangent K
   // (free dofs), the candidates' gap gradients C (one row per candidate, free-dof columns) and
-  // the gaps at h = 0 of the undeformed shell, g0 (mm); then g = g0 - h + C x.
+  // the gaps at h = 0 of the undeformed shell, g0 (mm); then g = g0 - h + C x. With the
+  // interpolated traction these are the weighted gaps over their weights (IndentationOptions).
   const SparseMatrix& linear_tangent() const { return reference_tangent_; }
   SparseMatrix contact_matrix() const;
   Eigen::VectorXd reference_gaps() const;
@@ -135,9 +147,13 @@ class IndentationProblem : public cont::Problem {
 
  private:
   struct CandidateSlots;
+  struct WeightedGaps;
   void choose_candidates(const std::vector<int>& nodes);
   void build_pattern();
   NodeGap gap(int i, const std::vector<NodeState>& s, double h, bool derivative) const;
+  // Candidate i's gap value (mm): the node's gap, or its weighted gap (interpolated traction).
+  double gap_value(int i, const cont::Vector& z, const std::vector<NodeState>& s, double h) const;
+  void build_weighted_gaps();
   const std::vector<NodeState>& shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
   void build_reaction_row();
   void kinematic_quantities(const cont::Vector& z, const std::vector<NodeState>& s,
@@ -167,6 +183,7 @@ class IndentationProblem : public cont::Problem {
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
   std::vector<CandidateSlots> slots_;
+  std::unique_ptr<WeightedGaps> weighted_;         // interpolated traction only
   std::unique_ptr<LinearSolver> solver_;           // a direct LU of the Jacobian, or
   std::unique_ptr<ContactJacobianSolver> krylov_;  // the preconditioned Krylov solver
   IndentationCounters counters_;

@@ -17,6 +17,7 @@
 #include "continuation/pseudo_arclength.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "section/vam_section.hpp"
 
 namespace si {
 namespace {
@@ -31,6 +32,10 @@ IndentationOptions options_of(const CaseFile& c, int threads, const std::string&
   o.ncp = c.contact.solver == ContactSolver::kActiveSet ? NcpFunction::kMin
                                                         : NcpFunction::kFischerBurmeister;
   o.threads = threads;
+  // The paper's option (issue #4 item 3); the case file refuses it with nonlinear kinematics.
+  o.interpolated_traction = c.contact.traction == ContactTraction::kInterpolated;
+  o.interpolated.fbar = c.contact.fbar;
+  if (c.contact.fbar) o.interpolated.fbar_top = analyze_vam(c.laminate).Fbar_top;
   return o;
 }
 

@@ -41,6 +41,8 @@ const Choices<LocalContactModel> kLocalModels{{"none", LocalContactModel::kNone}
                                               {"hertz", LocalContactModel::kHertz},
                                               {"yang_sun", LocalContactModel::kYangSun},
                                               {"vam", LocalContactModel::kVam}};
+const Choices<ContactTraction> kTractions{{"nodal", ContactTraction::kNodal},
+                                          {"interpolated", ContactTraction::kInterpolated}};
 const Choices<PathMethod> kMethods{{"natural", PathMethod::kNatural},
                                    {"pseudo_arclength", PathMethod::kPseudoArclength}};
 const Choices<LoadType> kLoadTypes{{"apex_force", LoadType::kApexForce},
@@ -176,14 +178,29 @@ IndenterSpec read_indenter(const MapReader& top) {
   return indenter;
 }
 
-ContactSpec read_contact(const MapReader& top) {
+// The kinematics decide whether the paper's traction option applies (it is defined for linear
+// kinematics: paper eqs 72-80 with a constant K_e).
+ContactSpec read_contact(const MapReader& top, Kinematics kinematics) {
   ContactSpec contact;
   const auto map = section(top, "contact");
   if (!map) return contact;
-  map->allow_only({"surface", "solver", "local"});
+  map->allow_only({"surface", "solver", "local", "traction", "fbar"});
   contact.surface = map->choice_or("surface", kSurfaces, contact.surface);
   contact.solver = map->choice_or("solver", kSolvers, contact.solver);
   contact.local = map->choice_or("local", kLocalModels, contact.local);
+  contact.traction = map->choice_or("traction", kTractions, contact.traction);
+  contact.fbar = map->choice_or("fbar", kBooleans, contact.fbar);
+  if (contact.traction == ContactTraction::kInterpolated && kinematics != Kinematics::kLinear)
+    throw_input(
+        "the interpolated contact traction (the paper's option) is defined for linear "
+        "kinematics only (paper eqs 72-80); set `kinematics: linear` or use "
+        "`traction: nodal`",
+        map->where("traction"));
+  if (contact.fbar && contact.traction != ContactTraction::kInterpolated)
+    throw_input(
+        "the F-bar coupling acts through the interpolated traction; set "
+        "`contact.traction: interpolated` or `fbar: false`",
+        map->where("fbar"));
   return contact;
 }
 
@@ -326,13 +343,14 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
                   "contact", "path", "output", "load"});
   top.at("laminate");  // say it is missing before reading the rest
   const MaterialTable materials = read_materials(top);
+  const Kinematics kinematics = top.choice_or("kinematics", kKinematics, Kinematics::kNonlinear);
   return CaseFile{read_laminate(top.at("laminate"), top.where("laminate"), materials),
                   materials.default_material,
                   read_shell(top),
                   read_mesh(top),
-                  top.choice_or("kinematics", kKinematics, Kinematics::kNonlinear),
+                  kinematics,
                   read_indenter(top),
-                  read_contact(top),
+                  read_contact(top, kinematics),
                   read_path(top),
                   read_output(top),
                   read_load(top),

@@ -72,10 +72,16 @@ enum class ContactSurface { kOuter, kMid };
 enum class ContactSolver { kKinsol, kActiveSet };
 enum class LocalContactModel { kNone, kHertz, kYangSun, kVam };
 
+// Contact traction: nodal Lagrange multipliers (forces), or the paper's interpolated traction
+// with weighted gaps (analysis/interpolated_contact.hpp; linear kinematics only).
+enum class ContactTraction { kNodal, kInterpolated };
+
 struct ContactSpec {
   ContactSurface surface = ContactSurface::kOuter;  // outer = top face of the laminate
   ContactSolver solver = ContactSolver::kKinsol;
   LocalContactModel local = LocalContactModel::kNone;
+  ContactTraction traction = ContactTraction::kNodal;
+  bool fbar = false;  // the paper's F-bar coupling term; needs traction: interpolated
 };
 
 enum class PathMethod { kNatural, kPseudoArclength };

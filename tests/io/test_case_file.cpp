@@ -45,6 +45,8 @@ TEST(CaseFile, ReadsThePaperCapStudy) {
   EXPECT_EQ(c.contact.surface, ContactSurface::kOuter);
   EXPECT_EQ(c.contact.solver, ContactSolver::kKinsol);
   EXPECT_EQ(c.contact.local, LocalContactModel::kNone);
+  EXPECT_EQ(c.contact.traction, ContactTraction::kNodal);
+  EXPECT_FALSE(c.contact.fbar);
   EXPECT_EQ(c.path.method, PathMethod::kPseudoArclength);
   EXPECT_DOUBLE_EQ(c.path.depth_max, 10.0);
   EXPECT_DOUBLE_EQ(c.path.step, 0.1);
@@ -201,7 +203,7 @@ shell: {type: rectangular_plate, length_x: 100 mm, length_y: 50 mm, edge: simply
 mesh: {element: bernstein4, symmetry: quarter}
 kinematics: linear
 indenter: {shape: superquadric, a: 5 mm, b: 6 mm, c: 7 mm, e1: 0.5, e2: 2, material: steel}
-contact: {surface: mid, solver: active_set, local: yang_sun}
+contact: {surface: mid, solver: active_set, local: yang_sun, traction: interpolated, fbar: true}
 path: {method: natural, depth_max: 2 mm, step: 0.5 mm, step_min: 0.01 mm, step_max: 1 mm,
        depths: [0.5 mm, 1 mm, 2 mm]}
 output: {dir: out, vtu_every: 0, formats: [json]}
@@ -224,6 +226,8 @@ output: {dir: out, vtu_every: 0, formats: [json]}
   EXPECT_EQ(plate.contact.surface, ContactSurface::kMid);
   EXPECT_EQ(plate.contact.solver, ContactSolver::kActiveSet);
   EXPECT_EQ(plate.contact.local, LocalContactModel::kYangSun);
+  EXPECT_EQ(plate.contact.traction, ContactTraction::kInterpolated);
+  EXPECT_TRUE(plate.contact.fbar);
   EXPECT_EQ(plate.path.method, PathMethod::kNatural);
   EXPECT_DOUBLE_EQ(plate.path.step_min, 0.01);
   EXPECT_DOUBLE_EQ(plate.path.step_max, 1.0);

@@ -53,6 +53,18 @@ void expect_error(const std::string& yaml, const Expected& x) {
   }
 }
 
+// Issue #4 item 3: the paper's interpolated traction is defined for linear kinematics (paper eqs
+// 72-80); with the default nonlinear kinematics it is refused, naming the key and the value.
+TEST(CaseFileErrors, InterpolatedTractionNeedsLinearKinematics) {
+  expect_error(kHead + "contact:\n  traction: interpolated\n",
+               {"contact.traction", "interpolated", 4, "defined for linear kinematics only"});
+}
+
+TEST(CaseFileErrors, FbarNeedsTheInterpolatedTraction) {
+  expect_error(kHead + "kinematics: linear\ncontact: {fbar: true}\n",
+               {"contact.fbar", "true", 4, "set `contact.traction: interpolated`"});
+}
+
 TEST(CaseFileErrors, UnknownTopLevelKeySuggestsTheClosest) {
   expect_error(kHead + "meshh: {element: mitc4}\n",
                {"meshh", "{element: mitc4}", 3, "unknown key 'meshh' (did you mean 'mesh'?)"});
