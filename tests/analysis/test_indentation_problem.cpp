@@ -5,6 +5,7 @@
 #include <random>
 
 #include "indentation_test_support.hpp"
+#include "section/vam_section.hpp"
 
 namespace si {
 namespace {
@@ -56,6 +57,26 @@ TEST(IndentationProblem, NonlinearJacobianMatchesFiniteDifferences) {
 
 TEST(IndentationProblem, LinearJacobianMatchesFiniteDifferences) {
   IndentationFixture f(coarse_cap_case("linear", "[45/-45]2S"));
+  expect_jacobian_matches_fd(*f.problem, 0.3);
+}
+
+// The paper's option: weighted gaps of the interpolated traction with the F-bar rows
+// (interpolated_contact.hpp), whose rows span each candidate's elements.
+TEST(IndentationProblem, InterpolatedTractionJacobianMatchesFiniteDifferences) {
+  const CaseFile c = coarse_cap_case("linear", "[45/-45]2S");
+  IndentationOptions o;
+  o.interpolated_traction = true;
+  o.interpolated.fbar = true;
+  o.interpolated.fbar_top = analyze_vam(c.laminate).Fbar_top;
+  IndentationFixture f(c, o);
+  expect_jacobian_matches_fd(*f.problem, 0.3);
+}
+
+// The direct LU route of the same Jacobian (the Krylov solver is the default).
+TEST(IndentationProblem, NonlinearJacobianMatchesFiniteDifferences_DirectLu) {
+  IndentationOptions o;
+  o.linear_solver = "umfpack";
+  IndentationFixture f(coarse_cap_case("nonlinear", "[0/90]2S"), o);
   expect_jacobian_matches_fd(*f.problem, 0.3);
 }
 
