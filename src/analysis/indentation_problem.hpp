@@ -2,12 +2,22 @@
 // a rigid indenter moves along its direction of travel e by t0 + h, t0 its first touch of the
 // shell's contact face, and presses the shell frictionlessly (paper eqs 20-23, 72-80; P6, P7).
 //
-// Unknowns z = [x ; lambda]: x the shell's chart coordinates (model/shell_chart.hpp; for linear
-// kinematics the element's linear-mode dofs, the same numbers) and lambda >= 0 one Lagrange
-// multiplier per candidate node: its contact force along e, N (contact/node_gap.hpp).
-// Equations:
+// Unknowns z = [x ; lambda ; alpha] (UnknownLayout): x the shell's chart coordinates
+// (model/shell_chart.hpp; for linear kinematics the element's linear-mode dofs, the same
+// numbers), lambda >= 0 one Lagrange multiplier per candidate node: its contact force along e, N
+// (contact/node_gap.hpp), and, with a power-law local contact (contact/local_contact_law.hpp,
+// docs/theory/local-indentation.md), the local approach alpha (mm) of the indenter towards the
+// shell's contact face. Equations:
 //     r(x) - sum_i lambda_i G_i(x) = 0               equilibrium (free dofs)
-//     phi(lambda_i, kappa g_i(x, h)) = 0             complementarity, per candidate
+//     phi(lambda_i, kappa g_i(x, h - alpha)) = 0     complementarity, per candidate
+//     s sum_i lambda_i - k sgn(alpha) |alpha|^1.5 = 0  local law (power law only; s = symmetry
+//                                                       factor: the law holds for the whole shell)
+// The indenter's travel into the contact face is h - alpha: alpha enters every gap alike. The law
+// is written as force in terms of alpha (not alpha = (F/k)^(2/3), whose derivative is infinite
+// at F = 0): its derivative 1.5 k alpha^0.5 is finite everywhere and zero at the start, where the
+// alpha column still has the gap rows' d_b kappa, so the Jacobian stays regular (local-
+// indentation.md 3). With the thin-layer law (vam) each gap gains c_L lambda_i / A_i instead, A_i
+// the node's tributary area: no extra unknown.
 // with g_i the gap along the direction of travel (travel_gap.hpp), G_i its gradient in the
 // node's dofs, phi the Fischer-Burmeister function (or min, for the active-set cross-check),
 // kappa a stiffness scale (the apex's translational stiffness along e, N/mm) that makes
@@ -29,6 +39,7 @@
 #include "analysis/chart_assembly.hpp"
 #include "analysis/shell_model.hpp"
 #include "contact/indenter.hpp"
+#include "contact/local_contact_law.hpp"
 #include "contact/ncp_function.hpp"
 #include "contact/node_gap.hpp"
 #include "continuation/problem.hpp"
@@ -45,6 +56,17 @@ struct IndentationOptions {
   NcpFunction ncp = NcpFunction::kFischerBurmeister;
   std::string linear_solver = "umfpack";  // "umfpack" | "klu" (the Jacobian is unsymmetric)
   int threads = 0;                        // element assembly (0 = OpenMP default)
+  LocalContactLaw local;                  // local contact in series (none by default)
+};
+
+// Where each kind of unknown sits in z = [x ; lambda ; alpha].
+struct UnknownLayout {
+  int shell = 0;        // x: z[0, shell)
+  int multipliers = 0;  // lambda: z[shell, shell + multipliers)
+  int local = 0;        // alpha: 1 with a power-law local contact, else 0
+  int lambda_begin() const { return shell; }
+  int alpha_index() const { return shell + multipliers; }
+  int size() const { return shell + multipliers + local; }
 };
 
 // Everything a user wants at one converged point (whole-shell values: symmetry applied).
@@ -57,6 +79,11 @@ struct IndentationState {
   double contact_area = 0;     // tributary area of the nodes in contact, mm^2
   int contact_nodes = 0;       // nodes in contact (whole-shell count is not reconstructed)
   double energy = 0;           // strain energy, N mm
+  // Local contact (zero without): the approach of the indenter towards the contact face at the
+  // apex (alpha for a power law, c_L p at the apex node for the thin layer), mm, and the energy
+  // stored in the local compliance, N mm (work = energy + local_energy).
+  double local_indentation = 0;
+  double local_energy = 0;
   Vector3d apex_curvature = Vector3d::Zero();  // k11, k12 + k21, k22 at the apex, 1/mm
   // KKT residuals: min gap (mm), min multiplier (N), max |lambda_i g_i| (N mm).
   double min_gap = 0, min_multiplier = 0, max_complementarity = 0;
@@ -83,6 +110,12 @@ class IndentationProblem : public cont::Problem {
   ~IndentationProblem() override;
 
   int size() const override;
+  UnknownLayout layout() const;
+  Eigen::Ref<const cont::Vector> multipliers(const cont::Vector& z) const {
+    return z.segment(chart_.size(), static_cast<Eigen::Index>(candidates_.size()));
+  }
+  // The depth of the indenter into the contact face: h - alpha (h without a power-law local law).
+  double face_depth(const cont::Vector& z, double h) const;
   bool residual(const cont::Vector& z, double h, cont::Vector& F) override;
   bool factorize(const cont::Vector& z, double h) override;
   bool solve(cont::Vector& b) override;
@@ -106,6 +139,8 @@ class IndentationProblem : public cont::Problem {
   // Replaces the candidate set (resuming a run whose set had grown): mesh node indices.
   void restore_candidates(const std::vector<int>& nodes);
   int num_shell_unknowns() const { return chart_.size(); }
+  int num_local_unknowns() const { return layout().local; }
+  const LocalContactLaw& local_law() const { return options_.local; }
   // The whole-shell force scale for tolerances: max(T_N, kappa * 1 mm * 1e-3) at z.
   double force_scale(const cont::Vector& z) const;
 
@@ -117,6 +152,10 @@ class IndentationProblem : public cont::Problem {
   const SparseMatrix& linear_tangent() const { return reference_tangent_; }
   SparseMatrix contact_matrix() const;
   Eigen::VectorXd reference_gaps() const;
+  // Thin-layer local law: each candidate's local compliance c_L / A_i, mm/N (zeros otherwise);
+  // the fast path adds it to the diagonal of the Schur complement. A power-law local law is
+  // nonlinear: the fast path refuses it (run_indentation_path routes it to the continuation).
+  Eigen::VectorXd layer_compliances() const;
   IndentationState evaluate(const cont::Vector& z, double h);
   const ShellModel& model() const { return model_; }
   const IndentationCounters& counters() const { return counters_; }
@@ -128,6 +167,9 @@ class IndentationProblem : public cont::Problem {
   void choose_candidates(const std::vector<int>& nodes);
   void build_pattern();
   NodeGap gap(int i, const std::vector<NodeState>& s, double h, bool derivative) const;
+  // Thin-layer local law: the approach at candidate i for its multiplier, c_L lambda_i / A_i.
+  double layer_approach(int i, double lambda) const;
+  void local_quantities(const cont::Vector& z, IndentationState& out) const;
   const std::vector<NodeState>& shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
   void build_reaction_row();
   void kinematic_quantities(const cont::Vector& z, const std::vector<NodeState>& s,
@@ -157,6 +199,7 @@ class IndentationProblem : public cont::Problem {
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
   std::vector<CandidateSlots> slots_;
+  int alpha_diagonal_ = -1;  // (alpha, alpha) with a power-law local contact
   std::unique_ptr<LinearSolver> solver_;
   IndentationCounters counters_;
   // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.

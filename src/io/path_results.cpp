@@ -22,7 +22,9 @@ const char* kColumns[] = {"depth_mm",
                           "min_multiplier_N",
                           "max_complementarity_Nmm",
                           "iterations",
-                          "step"};
+                          "step",
+                          "local_indent_mm",
+                          "local_energy_Nmm"};
 
 double monitor(const cont::Event& e, const std::vector<std::string>& names,
                const std::string& name) {

@@ -143,6 +143,18 @@ TEST(CaseFile, SandwichPlyListStudy) {
   EXPECT_EQ(c.output.vtu_every, 5);
 }
 
+// The local-indentation study (issue 7) is cap_00_path.yaml with contact.local: yang_sun.
+TEST(CaseFile, LocalIndentationStudy) {
+  const std::string dir = std::string(SHELLINDENT_SOURCE_DIR) + "/studies/";
+  const CaseFile local = read_case_file(dir + "cap_00_local.yaml");
+  const CaseFile path = read_case_file(dir + "cap_00_path.yaml");
+  EXPECT_EQ(local.contact.local, LocalContactModel::kYangSun);
+  EXPECT_EQ(path.contact.local, LocalContactModel::kNone);
+  EXPECT_EQ(local.mesh.size_apex, path.mesh.size_apex);
+  EXPECT_EQ(local.path.depth_max, path.path.depth_max);
+  EXPECT_EQ(local.output.dir, "results/cap_00_local/");
+}
+
 TEST(CaseFile, PlyListEntriesWithAnglesAndNamedLibraryMaterials) {
   const CaseFile c = parse_case_file(R"(
 material: paper-carbon-epoxy
