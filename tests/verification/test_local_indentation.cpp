@@ -170,38 +170,60 @@ TEST(LocalIndentationVerification, ThinShellLimit_StiffTransverseModulusGivesNon
 // Reference: the Mindlin plate (point-loads.md 4.2) under the Hertzian pressure
 // p = p0 (1 - r^2/c^2)^0.5 of radius c = (R alpha)^0.5 (point-loads.md 4.3), alpha the computed
 // local approach. Its centre deflection is the integral of the load against the centre's
-// influence function, w(r) per unit force of 4.2:
+// influence function, w(r) per unit force of 4.2 (derived here):
 //     w0 / F = a^2/(16 pi D) (1 + O(c^2/a^2)) + (ln(a/c) + 4/3 - ln 2) / (2 pi kGt),
 // where 4/3 - ln 2 = (1/2) H_{3/2} replaces the uniform disc's 1/2 (the integral of
 // [1 - (1 - rho^2)^1.5] / rho over (0, 1)); the O(c^2/a^2) bending term is below 1e-3 here.
-// The shell itself takes the load on the contact node(s) of its own contact with the sphere:
-// a nodal load acts as a disc of radius beta e (beta = 0.19, docs/verification.md section 3.2),
-// so the computed w0/F differs from the reference by (ln(c/(beta e)) + 0.14) / (2 pi kGt) / (w0/F),
-// a few percent on e = 1 mm; the 5 % is the tolerance. Also: the travel is the apex
-// deflection plus the local approach (the apex is in contact: its gap is zero) to the solver's
-// tolerance.
-TEST(LocalIndentationVerification, IsotropicClampedPlate_MindlinWithHertzPatch_Within5Percent) {
+// The shell itself takes the load on the node(s) of its own contact with the sphere: one node
+// here, and a nodal load acts as a disc of radius beta e (beta = 0.19, docs/verification.md
+// 3.3), so the computed w0/F differs from the reference by about
+// (ln(c/(beta e)) + 0.14) / (2 pi kGt) / (w0/F), growing like ln(1/e) under refinement (the
+// series model does not spread the shell's load over the Hertzian patch). Measured: e = 1 mm
+// -2.8 %, e = 0.5 mm -5.4 %. The 5 % is the tolerance: the 1 mm mesh passes, the 0.5 mm
+// mesh is kept DISABLED_ with its measured value (unresolved: see local-indentation.md 2). Also:
+// the travel is the apex deflection plus the local approach (the apex is in contact: its gap is
+// zero) to the solver's tolerance.
+struct PlateAgainstMindlin {
+  double stiffness = 0;  // F / apex w, N/mm
+  double reference = 0;  // Mindlin under the Hertzian patch, N/mm
+  double split = 0;      // apex w + alpha - h, mm
+};
+
+PlateAgainstMindlin plate_against_mindlin(double element_size) {
   const double depth = 0.05, a = 25.0, t = 3.8;
-  const CaseFile c = plate_case(t, quarter_mesh(1.0, 4.0), "hertz", depth, 0.01);
+  const CaseFile c = plate_case(t, quarter_mesh(element_size, 4.0), "hertz", depth, 0.01);
   IndentationSetup setup(c, 1);
   const PathResult r = run_indentation_path(setup);
-  ASSERT_TRUE(r.completed) << r.reason;
+  EXPECT_TRUE(r.completed) << r.reason;
   const IndentationState& s = r.points.back().state;
   const double kGt = setup.model.law.G(0, 0);
   const double D = kIsotropicE * t * t * t / (12 * (1 - kIsotropicNu * kIsotropicNu));
   const double c_hertz = std::sqrt(kSphere * s.local_indentation);
   const double compliance = a * a / (16 * kPi * D) +
                             (std::log(a / c_hertz) + 4.0 / 3.0 - std::log(2.0)) / (2 * kPi * kGt);
-  const double stiffness = s.force / s.apex_deflection;
-  std::cout << "plate at " << depth << " mm: F = " << s.force
+  PlateAgainstMindlin out{s.force / s.apex_deflection, 1 / compliance,
+                          s.apex_deflection + s.local_indentation - depth};
+  std::cout << "plate, e = " << element_size << " mm, at " << depth << " mm: F = " << s.force
             << " N, apex w = " << s.apex_deflection << " mm, alpha = " << s.local_indentation
             << " mm (alpha/h = " << s.local_indentation / depth << "), F/h = " << s.force / depth
-            << " N/mm, F/w = " << stiffness
-            << " N/mm, Mindlin with the Hertz patch (c = " << c_hertz << " mm) " << 1 / compliance
-            << " N/mm (" << stiffness * compliance - 1 << "), contact nodes " << s.contact_nodes
-            << ", radius " << s.contact_radius << "\n";
-  EXPECT_NEAR(stiffness, 1 / compliance, 0.05 / compliance);
-  EXPECT_NEAR(s.apex_deflection + s.local_indentation, depth, 1e-8 * depth);
+            << " N/mm, F/w = " << out.stiffness
+            << " N/mm, Mindlin with the Hertz patch (c = " << c_hertz << " mm) " << out.reference
+            << " N/mm (" << out.stiffness / out.reference - 1 << "), contact nodes "
+            << s.contact_nodes << "\n";
+  return out;
+}
+
+TEST(LocalIndentationVerification, IsotropicClampedPlate_MindlinWithHertzPatch_Within5Percent) {
+  const PlateAgainstMindlin p = plate_against_mindlin(1.0);
+  EXPECT_NEAR(p.stiffness, p.reference, 0.05 * p.reference);
+  EXPECT_NEAR(p.split, 0.0, 1e-8 * 0.05);
+}
+
+TEST(LocalIndentationVerification,
+     DISABLED_IsotropicClampedPlate_MindlinWithHertzPatch_Within5Percent_HalfMillimetreMesh) {
+  const PlateAgainstMindlin p = plate_against_mindlin(0.5);
+  EXPECT_NEAR(p.stiffness, p.reference, 0.05 * p.reference);
+  EXPECT_NEAR(p.split, 0.0, 1e-8 * 0.05);
 }
 
 // ---------------------------------------------------------------------------------------------
