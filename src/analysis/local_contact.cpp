@@ -6,9 +6,8 @@
 #include "section/vam_section.hpp"
 
 namespace si {
-namespace {
 
-const char* name_of(LocalContactModel m) {
+const char* local_contact_name(LocalContactModel m) {
   switch (m) {
     case LocalContactModel::kHertz:
       return "hertz";
@@ -21,6 +20,8 @@ const char* name_of(LocalContactModel m) {
   }
   return "none";
 }
+
+namespace {
 
 // Young's modulus and Poisson ratio of an elastic indenter (its 1-direction constants; an
 // indenter material is isotropic in practice); E = 0 for a rigid one.
@@ -36,7 +37,7 @@ void indenter_constants(const CaseFile& c, double& E, double& nu) {
 LocalContactLaw local_contact_law(const CaseFile& c) {
   const LocalContactModel m = c.contact.local;
   if (m == LocalContactModel::kNone) return {};
-  const Where where{c.file, "contact.local", name_of(m), 0};
+  const Where where{c.file, "contact.local", local_contact_name(m), 0};
   if (m == LocalContactModel::kVam) {
     const double compliance = analyze_vam(c.laminate).c_L(0, 0);
     if (!(compliance > 0))

@@ -17,5 +17,7 @@
 namespace si {
 
 LocalContactLaw local_contact_law(const CaseFile& c);
+// The case-file spelling of a choice: "none", "hertz", "yang_sun", "vam".
+const char* local_contact_name(LocalContactModel m);
 
 }  // namespace si
