@@ -12,12 +12,6 @@
 //     phi(lambda_i, kappa g_i(x, h - alpha)) = 0     complementarity, per candidate
 //     s sum_i lambda_i - k sgn(alpha) |alpha|^1.5 = 0  local law (power law only; s = symmetry
 //                                                       factor: the law holds for the whole shell)
-// The indenter's travel into the contact face is h - alpha: alpha enters every gap alike. The law
-// is written as force in terms of alpha (not alpha = (F/k)^(2/3), whose derivative is infinite
-// at F = 0): its derivative 1.5 k alpha^0.5 is finite everywhere and zero at the start, where the
-// alpha column still has the gap rows' d_b kappa, so the Jacobian stays regular (local-
-// indentation.md 3). With the thin-layer law (vam) each gap gains c_L lambda_i / A_i instead, A_i
-// the node's tributary area: no extra unknown.
 // with g_i the gap along the direction of travel (travel_gap.hpp), G_i its gradient in the
 // node's dofs, phi the Fischer-Burmeister function (or min, for the active-set cross-check),
 // kappa a stiffness scale (the apex's translational stiffness along e, N/mm) that makes
@@ -26,6 +20,13 @@
 //     [ phi_b kappa G^T        phi_a ]      K T + D of shell_chart.hpp on the shell columns.
 // Linear kinematics: K, G and the gap are those of the reference state (linearised gap,
 // node_gap.hpp), so the only nonlinearity is phi; this is the paper's linear setting.
+// Local law: the indenter's travel into the contact face is h - alpha, so alpha enters every gap
+// alike. The law is written as force in terms of alpha (not alpha = (F/k)^(2/3), whose
+// derivative is infinite at F = 0): its derivative 1.5 k alpha^0.5 is finite everywhere and zero
+// at the start, where the alpha column still has the gap rows' d_b kappa, so the Jacobian stays
+// regular (local-indentation.md 3). With the thin-layer law (vam) each gap gains
+// c_L lambda_i / A_i instead, A_i the node's tributary area: no extra unknown. The linear fast
+// path refuses the power law (nonlinear) and carries the thin layer.
 //
 // Candidates: the nodes whose contact point the indenter can reach within `candidate_depth` of
 // travel past first touch (reference configuration). adapt() grows the set, after each accepted
@@ -120,9 +121,9 @@ class IndentationProblem : public cont::Problem {
   bool factorize(const cont::Vector& z, double h) override;
   bool solve(cont::Vector& b) override;
   bool residual_p(const cont::Vector& z, double h, cont::Vector& out) override;
-  // Arclength metric: mean square of the shell coordinates (mm, rad) plus the mean square of the
-  // multipliers over kappa (mm), so that with parameter weight 1 an arclength step is about a
-  // depth step (each shell point moves at most as much as the indenter).
+  // Arclength metric: mean square of the shell coordinates (mm, rad; alpha counts as one more)
+  // plus the mean square of the multipliers over kappa (mm), so that with parameter weight 1 an
+  // arclength step is about a depth step (each shell point moves at most as much as the indenter).
   double inner(const cont::Vector& a, const cont::Vector& b) const override;
   std::vector<std::string> monitor_names() const override;
   // The monitors of a state, in monitor_names() order.
