@@ -104,6 +104,22 @@ TEST(LocalIndentationLaw, YangSunSteelBallOnGraphiteEpoxy_WorkedExample_PointLoa
   EXPECT_NEAR(law.force(0.1), 1018.0, 0.5);
 }
 
+// The law of a case: the paper's cap (carbon/epoxy, E_3 = 10 GPa, nu_23 of the library), rigid
+// 12.7 mm sphere. yang_sun: k = (4/3) 12.7^0.5 E_3 = 47 516 N/mm^1.5 (point-loads.md 4.4 with
+// a rigid ball); hertz: E* = E_3 / (1 - nu_23^2), R = 1/(1/12.7 + 1/80.9) (sphere on the cap).
+TEST(LocalIndentationLaw, OfThePaperCap_YangSunAndHertzConstants) {
+  CaseFile c = testing::coarse_cap_case("nonlinear", "[0/90]2S");
+  c.contact.local = LocalContactModel::kYangSun;
+  EXPECT_NEAR(local_contact_law(c).k, 4.0 / 3.0 * std::sqrt(12.7) * 10000.0, 1e-9 * 47516.0);
+  c.contact.local = LocalContactModel::kHertz;
+  const double nu23 = c.laminate.plies.back().material.constants().nu23;
+  const double R = 1 / (1 / 12.7 + 1 / 80.9);
+  EXPECT_NEAR(local_contact_law(c).k, 4.0 / 3.0 * std::sqrt(R) * 10000.0 / (1 - nu23 * nu23),
+              1e-9 * 47516.0);
+  c.contact.local = LocalContactModel::kNone;
+  EXPECT_EQ(local_contact_law(c).kind, LocalLawKind::kNone);
+}
+
 // ---------------------------------------------------------------------------------------------
 // 2. Thick-plate limit: clamped plate a = 25 mm, t = 50 mm (t/a = 2: the global compliance
 // ~1e-6 mm/N is negligible at small loads), hertz, depth 1e-4 mm (linear kinematics: all lengths
