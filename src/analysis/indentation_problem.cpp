@@ -19,6 +19,8 @@ struct IndentationProblem::CandidateSlots {
   std::array<int, 5> column{};  // (eq[r], multiplier)
   std::array<int, 5> row{};     // (multiplier, eq[c])
   int diagonal = -1;            // (multiplier, multiplier)
+  int alpha_column = -1;        // (multiplier, alpha), power-law local contact
+  int alpha_row = -1;           // (alpha, multiplier)
 };
 
 // Interpolated traction (IndentationOptions): the weighted gaps over their weights,
@@ -191,7 +193,16 @@ void IndentationProblem::build_pattern() {
         t.emplace_back(static_cast<int>(it.col()), nf + i, 0.0);
         t.emplace_back(nf + i, static_cast<int>(it.col()), 0.0);
       }
-  jacobian_ = SparseMatrix(nf + nc, nf + nc);
+  const UnknownLayout u = layout();
+  if (u.local) {
+    const int a = u.alpha_index();
+    for (int i = 0; i < nc; ++i) {
+      t.emplace_back(nf + i, a, 0.0);
+      t.emplace_back(a, nf + i, 0.0);
+    }
+    t.emplace_back(a, a, 0.0);
+  }
+  jacobian_ = SparseMatrix(u.size(), u.size());
   jacobian_.setFromTriplets(t.begin(), t.end());
   jacobian_.makeCompressed();
 
@@ -210,6 +221,10 @@ void IndentationProblem::build_pattern() {
             s.eq[r] >= 0 && s.eq[c] >= 0 ? value_slot(jacobian_, s.eq[r], s.eq[c]) : -1;
     }
     s.diagonal = value_slot(jacobian_, m, m);
+    if (u.local) {
+      s.alpha_column = value_slot(jacobian_, m, u.alpha_index());
+      s.alpha_row = value_slot(jacobian_, u.alpha_index(), m);
+    }
   }
   if (weighted_) {
     weighted_->column.clear();
@@ -221,18 +236,35 @@ void IndentationProblem::build_pattern() {
         weighted_->row.push_back(value_slot(jacobian_, nf + i, static_cast<int>(it.col())));
       }
   }
+  alpha_diagonal_ = u.local ? value_slot(jacobian_, u.alpha_index(), u.alpha_index()) : -1;
   // The Krylov solver condenses rows on one node's dofs: not the weighted rows, which span the
-  // node's elements (the direct LU then).
-  if (options_.linear_solver == kPreconditionedKrylov && !weighted_) {
+  // node's elements, nor the local approach alpha, which couples every row (the direct LU then).
+  if (options_.linear_solver == kPreconditionedKrylov && !weighted_ && !u.local) {
     if (!krylov_) krylov_ = std::make_unique<ContactJacobianSolver>(kappa_, "umfpack");
   } else {
+    krylov_.reset();
     solver_ = make_linear_solver(
         options_.linear_solver == kPreconditionedKrylov ? "umfpack" : options_.linear_solver);
   }
 }
 
+UnknownLayout IndentationProblem::layout() const {
+  return {chart_.size(), static_cast<int>(candidates_.size()),
+          options_.local.kind == LocalLawKind::kPowerLaw ? 1 : 0};
+}
+
 int IndentationProblem::size() const {
-  return chart_.size() + static_cast<int>(candidates_.size());
+  return layout().size();
+}
+
+double IndentationProblem::face_depth(const cont::Vector& z, double h) const {
+  const UnknownLayout u = layout();
+  return u.local ? h - z[u.alpha_index()] : h;
+}
+
+double IndentationProblem::layer_approach(int i, double lambda) const {
+  if (options_.local.kind != LocalLawKind::kThinLayer) return 0.0;
+  return options_.local.compliance * lambda / tributary_area_[candidates_[i]];
 }
 
 cont::Vector IndentationProblem::initial_point() const {
@@ -272,9 +304,15 @@ NodeGap IndentationProblem::gap(int i, const std::vector<NodeState>& s, double h
 }
 
 double IndentationProblem::gap_value(int i, const cont::Vector& z, const std::vector<NodeState>& s,
-                                     double h) const {
-  if (!weighted_) return gap(i, s, h, false).gap;
-  return weighted_->g0[i] - h + weighted_->C.row(i).dot(z.head(chart_.size()));
+                                     double depth) const {
+  if (!weighted_) return gap(i, s, depth, false).gap;
+  return weighted_->g0[i] - depth + weighted_->C.row(i).dot(z.head(chart_.size()));
+}
+
+double IndentationProblem::contact_gap(int i, const cont::Vector& z,
+                                       const std::vector<NodeState>& s, double depth,
+                                       double lambda) const {
+  return gap_value(i, z, s, depth) + layer_approach(i, lambda);
 }
 
 // r_free = r(x) - sum lambda_i G_i on the free dofs; returns the node states at z. Nonlinear
@@ -292,13 +330,14 @@ const std::vector<NodeState>& IndentationProblem::shell_terms(const cont::Vector
   }
   const std::vector<NodeState>& states = linear ? linear_states_ : shell_.states();
   if (weighted_) {
-    r_free -= weighted_->C.transpose() * z.tail(candidates_.size());
+    r_free -= weighted_->C.transpose() * multipliers(z);
     return states;
   }
+  const double depth = face_depth(z, h);
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const double lambda = z[nf + static_cast<int>(i)];
     if (lambda == 0.0) continue;
-    const NodeGap g = gap(static_cast<int>(i), states, h, false);
+    const NodeGap g = gap(static_cast<int>(i), states, depth, false);
     for (int l = 0; l < 5; ++l)
       if (slots_[i].eq[l] >= 0) r_free[slots_[i].eq[l]] -= lambda * g.gradient[l];
   }
@@ -318,9 +357,17 @@ bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector&
   }
   F.resize(size());
   F.head(nf) = r;
+  const double depth = face_depth(z, h);
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    const int k = static_cast<int>(i);
-    F[nf + k] = ncp(options_.ncp, z[nf + k], kappa_ * gap_value(k, z, *states, h)).value;
+    const int c = static_cast<int>(i);
+    const double lambda = z[nf + c];
+    F[nf + c] = ncp(options_.ncp, lambda, kappa_ * contact_gap(c, z, *states, depth, lambda)).value;
+  }
+  const UnknownLayout u = layout();
+  if (u.local) {
+    const double alpha = z[u.alpha_index()];
+    F[u.alpha_index()] =
+        model_.symmetry_factor * multipliers(z).sum() - options_.local.force(alpha);
   }
   return F.allFinite();
 }
@@ -342,24 +389,33 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   std::fill(J, J + jacobian_.nonZeros(), 0.0);
   for (int k = 0; k < K.nonZeros(); ++k) J[k_to_j_[k]] = K.valuePtr()[k];
   std::vector<ContactJacobianRow> rows(krylov_ ? candidates_.size() : 0);
+  const UnknownLayout u = layout();
+  const double depth = face_depth(z, h);
   for (std::size_t i = 0; weighted_ && i < candidates_.size(); ++i) {
     const int k = static_cast<int>(i);
-    const NcpValue phi = ncp(options_.ncp, z[nf + k], kappa_ * gap_value(k, z, *states, h));
+    const double lambda = z[nf + k];
+    const NcpValue phi =
+        ncp(options_.ncp, lambda, kappa_ * contact_gap(k, z, *states, depth, lambda));
     for (int e = weighted_->C.outerIndexPtr()[k]; e < weighted_->C.outerIndexPtr()[k + 1]; ++e) {
       J[weighted_->column[e]] -= weighted_->C.valuePtr()[e];
       J[weighted_->row[e]] += phi.d_b * kappa_ * weighted_->C.valuePtr()[e];
     }
-    J[slots_[i].diagonal] += phi.d_a;
+    J[slots_[i].diagonal] += phi.d_a + phi.d_b * kappa_ * layer_approach(k, 1.0);
+    if (u.local) {
+      J[slots_[i].alpha_column] += phi.d_b * kappa_;  // d g~ / d alpha = 1 (weighted gaps over w)
+      J[slots_[i].alpha_row] += model_.symmetry_factor;
+    }
   }
   for (std::size_t i = 0; !weighted_ && i < candidates_.size(); ++i) {
-    const double lambda = z[nf + static_cast<int>(i)];
-    const NodeGap g = gap(static_cast<int>(i), *states, h, nonlinear && lambda != 0.0);
-    const NcpValue phi = ncp(options_.ncp, lambda, kappa_ * g.gap);
+    const int ci = static_cast<int>(i);
+    const double lambda = z[nf + ci];
+    const NodeGap g = gap(ci, *states, depth, nonlinear && lambda != 0.0);
+    const NcpValue phi = ncp(options_.ncp, lambda, kappa_ * (g.gap + layer_approach(ci, lambda)));
     const CandidateSlots& s = slots_[i];
     if (krylov_) {
       rows[i].eq = s.eq;
       for (int r = 0; r < 5; ++r) rows[i].gradient[r] = g.gradient[r];
-      rows[i].a = phi.d_a;
+      rows[i].a = phi.d_a + phi.d_b * kappa_ * layer_approach(ci, 1.0);  // J's diagonal
       rows[i].b = phi.d_b * kappa_;
     }
     for (int r = 0; r < 5; ++r) {
@@ -370,8 +426,13 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
         for (int c = 0; c < 5; ++c)
           if (s.eq[c] >= 0) J[s.block[5 * r + c]] -= lambda * g.gradient_derivative(r, c);
     }
-    J[s.diagonal] += phi.d_a;
+    J[s.diagonal] += phi.d_a + phi.d_b * kappa_ * layer_approach(ci, 1.0);
+    if (u.local) {
+      if (g.hits) J[s.alpha_column] += phi.d_b * kappa_;  // d g / d alpha = 1
+      J[s.alpha_row] += model_.symmetry_factor;
+    }
   }
+  if (u.local) J[alpha_diagonal_] -= options_.local.stiffness(z[u.alpha_index()]);
   if (nonlinear) chart_.to_chart_jacobian(z.head(nf), r_free, jacobian_);
   try {
     if (krylov_)
@@ -399,24 +460,27 @@ bool IndentationProblem::residual_p(const cont::Vector& z, double h, cont::Vecto
   const int nf = chart_.size();
   std::vector<NodeState> s = node_states(z);
   out = cont::Vector::Zero(size());
+  const double depth = face_depth(z, h);
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    const int k = static_cast<int>(i);
-    if (!weighted_ && !gap(k, s, h, false).hits) continue;
-    const NcpValue phi = ncp(options_.ncp, z[nf + k], kappa_ * gap_value(k, z, s, h));
-    out[nf + static_cast<int>(i)] = -phi.d_b * kappa_;
+    const int c = static_cast<int>(i);
+    const double lambda = z[nf + c];
+    if (!weighted_ && !gap(c, s, depth, false).hits) continue;
+    const NcpValue phi = ncp(options_.ncp, lambda, kappa_ * contact_gap(c, z, s, depth, lambda));
+    out[nf + c] = -phi.d_b * kappa_;
   }
   return true;
 }
 
 double IndentationProblem::force_scale(const cont::Vector& z) const {
-  const double force = z.tail(candidates_.size()).sum() * model_.symmetry_factor;
+  const double force = multipliers(z).sum() * model_.symmetry_factor;
   return std::max(std::abs(force), kappa_ * 1e-3);
 }
 
 double IndentationProblem::inner(const cont::Vector& a, const cont::Vector& b) const {
-  const int nf = chart_.size();
-  const Eigen::Index nc = a.size() - nf;
-  double shell = a.head(nf).dot(b.head(nf)) / nf;
+  const int nf = chart_.size(), local = layout().local;
+  const Eigen::Index nc = a.size() - nf - local;
+  // alpha (mm) counts as one more shell coordinate.
+  double shell = (a.head(nf).dot(b.head(nf)) + a.tail(local).dot(b.tail(local))) / nf;
   if (nc > 0) shell += a.tail(nc).dot(b.tail(nc)) / (static_cast<double>(nc) * kappa_ * kappa_);
   return shell;
 }
@@ -447,8 +511,12 @@ std::vector<int> IndentationProblem::signature(const cont::Vector& z, double h) 
   const int nf = chart_.size();
   const std::vector<NodeState> s = node_states(z);
   std::vector<int> active(candidates_.size());
-  for (std::size_t i = 0; i < candidates_.size(); ++i)
-    active[i] = z[nf + static_cast<int>(i)] > kappa_ * gap_value(static_cast<int>(i), z, s, h);
+  const double depth = face_depth(z, h);
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const int c = static_cast<int>(i);
+    const double lambda = z[nf + c];
+    active[i] = lambda > kappa_ * contact_gap(c, z, s, depth, lambda);
+  }
   return active;
 }
 
@@ -459,15 +527,17 @@ bool IndentationProblem::adapt(cont::Vector& z, double h) {
   // Every node not yet a candidate whose contact point is now within candidate_depth of the
   // indenter (measured as travel along its path): the set follows the deformed shell.
   std::set<int> added;
+  const double depth = face_depth(z, h);
   for (int n = 0; n < model_.mesh.num_nodes(); ++n) {
     if (is_candidate[n]) continue;
     const Vector3d p = geometry_[n].X + s[n].u + geometry_[n].offset * s[n].d;
-    const TravelGap g = travel_gap(indenter_, direction_, p, t0_ + h, false);
-    if (g.hits && g.travel - t0_ - h <= options_.candidate_depth) added.insert(n);
+    const TravelGap g = travel_gap(indenter_, direction_, p, t0_ + depth, false);
+    if (g.hits && g.travel - t0_ - depth <= options_.candidate_depth) added.insert(n);
   }
   if (added.empty()) return false;
-  const int nf = chart_.size();
-  const cont::Vector lambda = z.tail(candidates_.size());
+  const int nf = chart_.size(), local = layout().local;
+  const cont::Vector lambda = multipliers(z);
+  const cont::Vector alpha = z.tail(local);
   std::vector<int> nodes = candidates_;
   nodes.insert(nodes.end(), added.begin(), added.end());
   const std::vector<double> guesses = touch_guess_;
@@ -476,6 +546,7 @@ bool IndentationProblem::adapt(cont::Vector& z, double h) {
   cont::Vector grown = cont::Vector::Zero(size());
   grown.head(nf) = z.head(nf);
   grown.segment(nf, lambda.size()) = lambda;
+  grown.tail(local) = alpha;
   z = grown;
   return true;
 }
@@ -502,6 +573,13 @@ Eigen::VectorXd IndentationProblem::reference_gaps() const {
   for (std::size_t i = 0; i < candidates_.size(); ++i)
     g0[static_cast<Eigen::Index>(i)] = gap_value(static_cast<int>(i), initial_point(), s, 0.0);
   return g0;
+}
+
+Eigen::VectorXd IndentationProblem::layer_compliances() const {
+  Eigen::VectorXd c(candidates_.size());
+  for (std::size_t i = 0; i < candidates_.size(); ++i)
+    c[static_cast<Eigen::Index>(i)] = layer_approach(static_cast<int>(i), 1.0);
+  return c;
 }
 
 // Linear kinematics: the support reaction along e is linear in x, r_e . x with
@@ -538,7 +616,7 @@ void IndentationProblem::kinematic_quantities(const cont::Vector& z,
   out.apex_curvature = nodal_strain_at(mesh, assembler_, *model_.element, s, apex, apex_elements_)
                            .segment<3>(3)
                            .transpose();
-  const double lambda_max = z.tail(candidates_.size()).cwiseAbs().maxCoeff();
+  const double lambda_max = multipliers(z).cwiseAbs().maxCoeff();
   const Vector3d axis_point = mesh.nodes[apex];
   out.force = 0;
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
@@ -554,6 +632,23 @@ void IndentationProblem::kinematic_quantities(const cont::Vector& z,
     }
   }
   out.force *= sym;
+}
+
+// The local approach at the apex and the energy stored in the local compliance (whole shell):
+// power law (2/5) k alpha^2.5; thin layer sum_i 1/2 c_L lambda_i^2 / A_i (linear springs).
+void IndentationProblem::local_quantities(const cont::Vector& z, IndentationState& out) const {
+  const UnknownLayout u = layout();
+  if (u.local) {
+    out.local_indentation = z[u.alpha_index()];
+    out.local_energy = options_.local.energy(z[u.alpha_index()]);
+    return;
+  }
+  if (options_.local.kind != LocalLawKind::kThinLayer) return;
+  for (int i = 0; i < u.multipliers; ++i) {
+    const double lambda = z[u.lambda_begin() + i];
+    out.local_energy += model_.symmetry_factor * 0.5 * lambda * layer_approach(i, lambda);
+    if (candidates_[i] == model_.apex_node()) out.local_indentation = layer_approach(i, lambda);
+  }
 }
 
 IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
@@ -580,14 +675,16 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   }
 
   kinematic_quantities(z, s, out);
+  local_quantities(z, out);
   out.min_gap = std::numeric_limits<double>::infinity();
   out.min_multiplier = std::numeric_limits<double>::infinity();
+  const double depth = face_depth(z, h);
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const int n = candidates_[i];
     const double lambda = z[nf + static_cast<int>(i)];
     const int k = static_cast<int>(i);
-    const bool hits = weighted_ || gap(k, s, h, false).hits;
-    const double g = gap_value(k, z, s, h);
+    const bool hits = weighted_ || gap(k, s, depth, false).hits;
+    const double g = contact_gap(k, z, s, depth, lambda);  // to the flattened face
     out.nodes.push_back(n);
     out.multipliers.push_back(lambda);
     out.gaps.push_back(hits ? g : std::numeric_limits<double>::infinity());

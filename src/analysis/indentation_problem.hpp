@@ -2,12 +2,16 @@
 // a rigid indenter moves along its direction of travel e by t0 + h, t0 its first touch of the
 // shell's contact face, and presses the shell frictionlessly (paper eqs 20-23, 72-80; P6, P7).
 //
-// Unknowns z = [x ; lambda]: x the shell's chart coordinates (model/shell_chart.hpp; for linear
-// kinematics the element's linear-mode dofs, the same numbers) and lambda >= 0 one Lagrange
-// multiplier per candidate node: its contact force along e, N (contact/node_gap.hpp).
-// Equations:
+// Unknowns z = [x ; lambda ; alpha] (UnknownLayout): x the shell's chart coordinates
+// (model/shell_chart.hpp; for linear kinematics the element's linear-mode dofs, the same
+// numbers), lambda >= 0 one Lagrange multiplier per candidate node: its contact force along e, N
+// (contact/node_gap.hpp), and, with a power-law local contact (contact/local_contact_law.hpp,
+// docs/theory/local-indentation.md), the local approach alpha (mm) of the indenter towards the
+// shell's contact face. Equations:
 //     r(x) - sum_i lambda_i G_i(x) = 0               equilibrium (free dofs)
-//     phi(lambda_i, kappa g_i(x, h)) = 0             complementarity, per candidate
+//     phi(lambda_i, kappa g_i(x, h - alpha)) = 0     complementarity, per candidate
+//     s sum_i lambda_i - k sgn(alpha) |alpha|^1.5 = 0  local law (power law only; s = symmetry
+//                                                       factor: the law holds for the whole shell)
 // with g_i the gap along the direction of travel (travel_gap.hpp), G_i its gradient in the
 // node's dofs, phi the Fischer-Burmeister function (or min, for the active-set cross-check),
 // kappa a stiffness scale (the apex's translational stiffness along e, N/mm) that makes
@@ -16,6 +20,13 @@
 //     [ phi_b kappa G^T        phi_a ]      K T + D of shell_chart.hpp on the shell columns.
 // Linear kinematics: K, G and the gap are those of the reference state (linearised gap,
 // node_gap.hpp), so the only nonlinearity is phi; this is the paper's linear setting.
+// Local law: the indenter's travel into the contact face is h - alpha, so alpha enters every gap
+// alike. The law is written as force in terms of alpha (not alpha = (F/k)^(2/3), whose
+// derivative is infinite at F = 0): its derivative 1.5 k alpha^0.5 is finite everywhere and zero
+// at the start, where the alpha column still has the gap rows' d_b kappa, so the Jacobian stays
+// regular (local-indentation.md 3). With the thin-layer law (vam) each gap gains
+// c_L lambda_i / A_i instead, A_i the node's tributary area: no extra unknown. The linear fast
+// path refuses the power law (nonlinear) and carries the thin layer.
 //
 // Candidates: the nodes whose contact point the indenter can reach within `candidate_depth` of
 // travel past first touch (reference configuration). adapt() grows the set, after each accepted
@@ -31,6 +42,7 @@
 #include "analysis/interpolated_contact.hpp"
 #include "analysis/shell_model.hpp"
 #include "contact/indenter.hpp"
+#include "contact/local_contact_law.hpp"
 #include "contact/ncp_function.hpp"
 #include "contact/node_gap.hpp"
 #include "continuation/problem.hpp"
@@ -50,7 +62,8 @@ struct IndentationOptions {
   NcpFunction ncp = NcpFunction::kFischerBurmeister;
   // The Jacobian's solver: kPreconditionedKrylov (contact_jacobian_solver.hpp; an LU of the
   // Jacobian where it cannot help) or a direct LU, "umfpack" | "klu" (the Jacobian is unsymmetric).
-  // The interpolated traction's rows span several nodes: it always uses the direct LU.
+  // The interpolated traction's rows span several nodes and a power-law local contact adds
+  // the unknown alpha: those use the direct LU.
   std::string linear_solver = "cholesky_gmres";
   int threads = 0;  // element assembly (0 = OpenMP default)
   // The paper's option (contact.traction: interpolated; interpolated_contact.hpp), linear
@@ -61,6 +74,17 @@ struct IndentationOptions {
   // kappa, the force scale and the fast path apply as they are.
   bool interpolated_traction = false;
   InterpolatedContactOptions interpolated;
+  LocalContactLaw local;  // local contact in series (none by default)
+};
+
+// Where each kind of unknown sits in z = [x ; lambda ; alpha].
+struct UnknownLayout {
+  int shell = 0;        // x: z[0, shell)
+  int multipliers = 0;  // lambda: z[shell, shell + multipliers)
+  int local = 0;        // alpha: 1 with a power-law local contact, else 0
+  int lambda_begin() const { return shell; }
+  int alpha_index() const { return shell + multipliers; }
+  int size() const { return shell + multipliers + local; }
 };
 
 // Everything a user wants at one converged point (whole-shell values: symmetry applied).
@@ -73,6 +97,11 @@ struct IndentationState {
   double contact_area = 0;     // tributary area of the nodes in contact, mm^2
   int contact_nodes = 0;       // nodes in contact (whole-shell count is not reconstructed)
   double energy = 0;           // strain energy, N mm
+  // Local contact (zero without): the approach of the indenter towards the contact face at the
+  // apex (alpha for a power law, c_L p at the apex node for the thin layer), mm, and the energy
+  // stored in the local compliance, N mm (work = energy + local_energy).
+  double local_indentation = 0;
+  double local_energy = 0;
   Vector3d apex_curvature = Vector3d::Zero();  // k11, k12 + k21, k22 at the apex, 1/mm
   // KKT residuals: min gap (mm), min multiplier (N), max |lambda_i g_i| (N mm).
   double min_gap = 0, min_multiplier = 0, max_complementarity = 0;
@@ -100,13 +129,19 @@ class IndentationProblem : public cont::Problem {
   ~IndentationProblem() override;
 
   int size() const override;
+  UnknownLayout layout() const;
+  Eigen::Ref<const cont::Vector> multipliers(const cont::Vector& z) const {
+    return z.segment(chart_.size(), static_cast<Eigen::Index>(candidates_.size()));
+  }
+  // The depth of the indenter into the contact face: h - alpha (h without a power-law local law).
+  double face_depth(const cont::Vector& z, double h) const;
   bool residual(const cont::Vector& z, double h, cont::Vector& F) override;
   bool factorize(const cont::Vector& z, double h) override;
   bool solve(cont::Vector& b) override;
   bool residual_p(const cont::Vector& z, double h, cont::Vector& out) override;
-  // Arclength metric: mean square of the shell coordinates (mm, rad) plus the mean square of the
-  // multipliers over kappa (mm), so that with parameter weight 1 an arclength step is about a
-  // depth step (each shell point moves at most as much as the indenter).
+  // Arclength metric: mean square of the shell coordinates (mm, rad; alpha counts as one more)
+  // plus the mean square of the multipliers over kappa (mm), so that with parameter weight 1 an
+  // arclength step is about a depth step (each shell point moves at most as much as the indenter).
   double inner(const cont::Vector& a, const cont::Vector& b) const override;
   std::vector<std::string> monitor_names() const override;
   // The monitors of a state, in monitor_names() order.
@@ -123,6 +158,8 @@ class IndentationProblem : public cont::Problem {
   // Replaces the candidate set (resuming a run whose set had grown): mesh node indices.
   void restore_candidates(const std::vector<int>& nodes);
   int num_shell_unknowns() const { return chart_.size(); }
+  int num_local_unknowns() const { return layout().local; }
+  const LocalContactLaw& local_law() const { return options_.local; }
   // The whole-shell force scale for tolerances: max(T_N, kappa * 1 mm * 1e-3) at z.
   double force_scale(const cont::Vector& z) const;
 
@@ -135,6 +172,10 @@ class IndentationProblem : public cont::Problem {
   const SparseMatrix& linear_tangent() const { return reference_tangent_; }
   SparseMatrix contact_matrix() const;
   Eigen::VectorXd reference_gaps() const;
+  // Thin-layer local law: each candidate's local compliance c_L / A_i, mm/N (zeros otherwise);
+  // the fast path adds it to the diagonal of the Schur complement. A power-law local law is
+  // nonlinear: the fast path refuses it (run_indentation_path routes it to the continuation).
+  Eigen::VectorXd layer_compliances() const;
   IndentationState evaluate(const cont::Vector& z, double h);
   const ShellModel& model() const { return model_; }
   const IndentationCounters& counters() const { return counters_; }
@@ -151,9 +192,16 @@ class IndentationProblem : public cont::Problem {
   void choose_candidates(const std::vector<int>& nodes);
   void build_pattern();
   NodeGap gap(int i, const std::vector<NodeState>& s, double h, bool derivative) const;
-  // Candidate i's gap value (mm): the node's gap, or its weighted gap (interpolated traction).
-  double gap_value(int i, const cont::Vector& z, const std::vector<NodeState>& s, double h) const;
+  // Candidate i's gap value (mm) at the face depth (h - alpha): the node's gap, or its weighted
+  // gap (interpolated traction); contact_gap adds the thin-layer approach of its multiplier.
+  double gap_value(int i, const cont::Vector& z, const std::vector<NodeState>& s,
+                   double depth) const;
+  double contact_gap(int i, const cont::Vector& z, const std::vector<NodeState>& s, double depth,
+                     double lambda) const;
   void build_weighted_gaps();
+  // Thin-layer local law: the approach at candidate i for its multiplier, c_L lambda_i / A_i.
+  double layer_approach(int i, double lambda) const;
+  void local_quantities(const cont::Vector& z, IndentationState& out) const;
   const std::vector<NodeState>& shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
   void build_reaction_row();
   void kinematic_quantities(const cont::Vector& z, const std::vector<NodeState>& s,
@@ -186,6 +234,7 @@ class IndentationProblem : public cont::Problem {
   std::unique_ptr<WeightedGaps> weighted_;         // interpolated traction only
   std::unique_ptr<LinearSolver> solver_;           // a direct LU of the Jacobian, or
   std::unique_ptr<ContactJacobianSolver> krylov_;  // the preconditioned Krylov solver
+  int alpha_diagonal_ = -1;                        // (alpha, alpha) with a power-law local contact
   IndentationCounters counters_;
   // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.
   cont::Vector cached_z_;

@@ -10,6 +10,7 @@
 #include "analysis/active_set_solver.hpp"
 #include "analysis/critical_force.hpp"
 #include "analysis/linear_indentation.hpp"
+#include "analysis/local_contact.hpp"
 #include "contact/indenter_factory.hpp"
 #include "continuation/checkpoint.hpp"
 #include "continuation/kinsol_corrector.hpp"
@@ -36,6 +37,7 @@ IndentationOptions options_of(const CaseFile& c, int threads, const std::string&
   o.interpolated_traction = c.contact.traction == ContactTraction::kInterpolated;
   o.interpolated.fbar = c.contact.fbar;
   if (c.contact.fbar) o.interpolated.fbar_top = analyze_vam(c.laminate).Fbar_top;
+  o.local = local_contact_law(c);
   return o;
 }
 
@@ -192,7 +194,8 @@ cont::Checkpoint restore(const std::string& checkpoint, IndentationProblem& prob
   } catch (const std::exception& e) {
     throw_input(std::string("cannot resume: ") + e.what(), Where{checkpoint, "", "", 0});
   }
-  const std::size_t nc = c.state.current.point.x.size() - problem.num_shell_unknowns();
+  const std::size_t nc =
+      c.state.current.point.x.size() - problem.num_shell_unknowns() - problem.num_local_unknowns();
   std::vector<int> candidates = side["candidates"].get<std::vector<int>>();
   if (nc > candidates.size())
     throw_input("cannot resume: the checkpoint does not belong to this case",
@@ -298,11 +301,13 @@ std::vector<double> path_point_values(const PathPoint& p) {
           s.min_multiplier,
           s.max_complementarity,
           static_cast<double>(p.iterations),
-          p.step};
+          p.step,
+          s.local_indentation,
+          s.local_energy};
 }
 
 PathPoint path_point_from_values(const std::vector<double>& v) {
-  SI_REQUIRE(v.size() == 17, "a path point has 17 values");
+  SI_REQUIRE(v.size() == 19, "a path point has 19 values");
   PathPoint p;
   IndentationState& s = p.state;
   s.depth = v[0], s.force = v[1], s.reaction = v[2], s.apex_deflection = v[3];
@@ -310,6 +315,7 @@ PathPoint path_point_from_values(const std::vector<double>& v) {
   s.apex_curvature = Vector3d(v[7], v[8], v[9]);
   s.energy = v[10], p.work = v[11], s.min_gap = v[12], s.min_multiplier = v[13];
   s.max_complementarity = v[14], p.iterations = static_cast<int>(v[15]), p.step = v[16];
+  s.local_indentation = v[17], s.local_energy = v[18];
   return p;
 }
 
@@ -323,7 +329,10 @@ std::vector<double> depth_grid(const PathSpec& path) {
 
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback,
                                 const PathControl& control) {
-  PathResult r = setup.model.kinematics == Kinematics::kLinear ? run_linear(setup, callback)
+  // A power-law local contact is nonlinear even with linear kinematics: no fast path then.
+  const bool fast =
+      setup.model.kinematics == Kinematics::kLinear && setup.problem->num_local_unknowns() == 0;
+  PathResult r = fast ? run_linear(setup, callback)
                  : setup.case_file.contact.solver == ContactSolver::kActiveSet
                      ? run_active_set(setup, callback)
                      : run_continuation(setup, callback, control);

@@ -2,6 +2,8 @@
 // problem, and the path method (docs/case-file.md `path`, `contact`):
 //  * linear kinematics: the linear fast path (linear_indentation.hpp) at each depth of the grid
 //    - exact for the linear problem, which has no limit points, so `path.method` is not needed;
+//    with a power-law local contact (contact.local hertz or yang_sun, nonlinear) the path is
+//    that of the nonlinear kinematics below, on the linear problem;
 //  * nonlinear, contact.solver kinsol: continuation/ natural (the depth grid, hit exactly) or
 //    pseudo_arclength (to depth_max, through limit points), with the KINSOL corrector on the
 //    Fischer-Burmeister system, events located (force extrema, inflections of T_N against k11
@@ -52,7 +54,8 @@ struct PathPoint {
 
 // A point's scalar results in the order of path.csv's columns (io/path_results.hpp, docs/
 // results.md): depth, force, reaction, apex deflection, contact radius, area, nodes, k11, k12,
-// k22, energy, work, min gap, min multiplier, max complementarity, iterations, step. The inverse
+// k22, energy, work, min gap, min multiplier, max complementarity, iterations, step, local
+// indentation, local energy. The inverse
 // restores those fields (checkpoints); the per-node vectors of the state stay empty.
 std::vector<double> path_point_values(const PathPoint& p);
 PathPoint path_point_from_values(const std::vector<double>& v);

@@ -12,6 +12,8 @@ LinearIndentation::LinearIndentation(const IndentationProblem& problem)
     : problem_(problem), solver_(make_linear_solver("cholmod")) {
   SI_REQUIRE(problem.model().kinematics == Kinematics::kLinear,
              "the linear fast path needs linear kinematics");
+  SI_REQUIRE(problem.num_local_unknowns() == 0,
+             "the linear fast path cannot carry a power-law local contact (it is nonlinear)");
   const SparseMatrix& K = problem.linear_tangent();
   solver_->analyze(K);
   solver_->factorize(K);
@@ -25,6 +27,8 @@ LinearIndentation::LinearIndentation(const IndentationProblem& problem)
     S_.col(j) = C_ * y;
   }
   S_ = 0.5 * (S_ + S_.transpose()).eval();  // exact symmetry for the dense Cholesky
+  // Thin-layer local law (vam): each gap gains c_L++ lambda_i / A_i.
+  S_.diagonal() += problem.layer_compliances();
   lambda_ = Eigen::VectorXd::Zero(nc);
 }
 

@@ -201,6 +201,15 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics) {
         "the F-bar coupling acts through the interpolated traction; set "
         "`contact.traction: interpolated` or `fbar: false`",
         map->where("fbar"));
+  // The power laws' equation F = k alpha^1.5 has no pivot of its own at the start; with nodal
+  // gaps the apex row, closed at first touch, supplies it, but the weighted gaps are all open
+  // there and the Jacobian is singular (measured on studies/paper_option_cap.yaml).
+  if (contact.traction == ContactTraction::kInterpolated &&
+      (contact.local == LocalContactModel::kHertz || contact.local == LocalContactModel::kYangSun))
+    throw_input(
+        "a power-law local contact (hertz, yang_sun) is not available with the interpolated "
+        "traction; use `traction: nodal` or `local: none | vam`",
+        map->where("local"));
   return contact;
 }
 

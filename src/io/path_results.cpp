@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "analysis/local_contact.hpp"
+
 namespace si {
 namespace {
 
@@ -22,7 +24,9 @@ const char* kColumns[] = {"depth_mm",
                           "min_multiplier_N",
                           "max_complementarity_Nmm",
                           "iterations",
-                          "step"};
+                          "step",
+                          "local_indent_mm",
+                          "local_energy_Nmm"};
 
 double monitor(const cont::Event& e, const std::vector<std::string>& names,
                const std::string& name) {
@@ -98,6 +102,19 @@ nlohmann::json events_json(const PathResult& result) {
   return events;
 }
 
+namespace {
+
+// contact.local and its constant (docs/theory/local-indentation.md).
+nlohmann::json local_contact_json(const IndentationSetup& setup) {
+  const LocalContactLaw& law = setup.problem->local_law();
+  nlohmann::json j = {{"law", local_contact_name(setup.case_file.contact.local)}};
+  if (law.kind == LocalLawKind::kPowerLaw) j["k_N_per_mm1.5"] = law.k;
+  if (law.kind == LocalLawKind::kThinLayer) j["c_L_mm_per_MPa"] = law.compliance;
+  return j;
+}
+
+}  // namespace
+
 nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result) {
   const ShellModel& m = setup.model;
   nlohmann::json points = nlohmann::json::array();
@@ -117,6 +134,7 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
           {"contact_candidates", setup.problem->candidates().size()},
           {"symmetry_factor", m.symmetry_factor},
           {"first_touch_travel_mm", setup.problem->first_touch()},
+          {"local_contact", local_contact_json(setup)},
           {"note",
            "whole-shell values (a quarter model's forces, areas and energies times 4); depth = "
            "indenter travel after first touch; force along the direction of travel"},

@@ -2,7 +2,8 @@
 //   path.csv    one row per converged point, columns (whole-shell values):
 //     depth_mm, force_N, reaction_N, apex_w_mm, contact_radius_mm, contact_area_mm2,
 //     contact_nodes, k11_per_mm, k12_per_mm, k22_per_mm, energy_Nmm, work_Nmm, min_gap_mm,
-//     min_multiplier_N, max_complementarity_Nmm, iterations, step
+//     min_multiplier_N, max_complementarity_Nmm, iterations, step, local_indent_mm,
+//     local_energy_Nmm
 //   path.json   the same points plus the run's description, status and events
 //   events.json the located events (type, monitor, depth, force, curvatures, step)
 //   path_grid.csv (pseudo-arclength runs) the same columns at fixed depths 0, dh, 2 dh, ...,

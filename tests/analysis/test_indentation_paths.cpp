@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 
 #include "analysis/indentation_run.hpp"
 #include "indentation_test_support.hpp"
@@ -71,6 +72,54 @@ TEST(IndentationPaths, ActiveSetGridAgreesWithKinsol) {
     }
   }
   EXPECT_EQ(b.points.size(), 4u);  // 0, 0.2, 0.4, 0.6
+}
+
+}  // namespace
+}  // namespace si
+
+namespace si {
+namespace {
+
+// Issue 7: a local law in series (yang_sun) on the nonlinear cap path. The pseudo-arclength run
+// starts at h = 0 (alpha = 0, where dF/dalpha = 0) and reaches 1 mm; the active-set grid of the
+// same case gives the same force at every grid depth (to the corrector tolerance, 1e-8), and at
+// every point the travel splits into the apex face deflection plus the local approach (the apex
+// is in contact; on the axis its director does not turn): h = apex_w + alpha to 1e-8 mm; the
+// force is k alpha^1.5. The local law makes the path softer than `none` at every depth.
+TEST(IndentationPaths, YangSunLocalLaw_ArclengthAndActiveSetAgreeAndTravelSplits) {
+  CaseFile c =
+      testing::coarse_cap_path_case("[0/0]2S", PathMethod::kPseudoArclength, 1.0, 0.2, 0.5);
+  c.contact.local = LocalContactModel::kYangSun;
+  IndentationSetup arclength(c, 1);
+  const PathResult a = run_indentation_path(arclength);
+  ASSERT_TRUE(a.completed) << a.reason;
+  const LocalContactLaw& law = arclength.problem->local_law();
+  for (const PathPoint& p : a.points) {
+    const IndentationState& s = p.state;
+    EXPECT_NEAR(s.apex_deflection + s.local_indentation, s.depth, 1e-8) << s.depth;
+    EXPECT_NEAR(s.force, law.force(s.local_indentation), 1e-8 * (1 + s.force)) << s.depth;
+  }
+  c.path.method = PathMethod::kNatural;
+  c.path.depths.clear();
+  for (std::size_t i = 1; i < a.points.size(); ++i)
+    c.path.depths.push_back(a.points[i].state.depth);
+  c.contact.solver = ContactSolver::kActiveSet;
+  IndentationSetup active_set(c, 1);
+  const PathResult b = run_indentation_path(active_set);
+  ASSERT_TRUE(b.completed) << b.reason;
+  ASSERT_EQ(b.points.size(), a.points.size());
+  c.contact.local = LocalContactModel::kNone;
+  IndentationSetup none(c, 1);
+  const PathResult n = run_indentation_path(none);
+  ASSERT_TRUE(n.completed) << n.reason;
+  for (std::size_t i = 1; i < a.points.size(); ++i) {
+    const IndentationState& x = a.points[i].state;
+    EXPECT_NEAR(x.force, b.points[i].state.force, 1e-8 * (1 + x.force)) << x.depth;
+    EXPECT_LT(x.force, n.points[i].state.force) << x.depth;
+    std::cout << "  h = " << x.depth << " mm: F = " << x.force << " N (none "
+              << n.points[i].state.force << " N), apex w = " << x.apex_deflection
+              << " mm, alpha = " << x.local_indentation << " mm\n";
+  }
 }
 
 }  // namespace

@@ -11,15 +11,18 @@
 namespace si {
 namespace {
 
-CaseFile resume_case(PathMethod method) {
-  return testing::coarse_cap_path_case("[0/0]2S", method, 0.8, 0.1, 0.15);
+CaseFile resume_case(PathMethod method, LocalContactModel local) {
+  CaseFile c = testing::coarse_cap_path_case("[0/0]2S", method, 0.8, 0.1, 0.15);
+  c.contact.local = local;
+  return c;
 }
 
 struct Killed : std::runtime_error {
   Killed() : std::runtime_error("killed") {}
 };
 
-void expect_resume_reproduces(PathMethod method, const std::string& name) {
+void expect_resume_reproduces(PathMethod method, const std::string& name,
+                              LocalContactModel local = LocalContactModel::kNone) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
@@ -27,13 +30,13 @@ void expect_resume_reproduces(PathMethod method, const std::string& name) {
   control.checkpoint = (dir / "checkpoint.json").string();
   control.checkpoint_interval = 3;
 
-  IndentationSetup whole(resume_case(method), 1);
+  IndentationSetup whole(resume_case(method, local), 1);
   const PathResult a = run_indentation_path(whole);
   ASSERT_TRUE(a.completed) << a.reason;
   ASSERT_GT(a.points.size(), 7u);
 
   {  // killed after 5 points: the last checkpoint is the one of point 3
-    IndentationSetup first(resume_case(method), 1);
+    IndentationSetup first(resume_case(method, local), 1);
     int seen = 0;
     const auto kill_after_five = [&](const PathPoint&, const cont::Vector&) {
       if (++seen == 5) throw Killed();
@@ -41,7 +44,7 @@ void expect_resume_reproduces(PathMethod method, const std::string& name) {
     };
     EXPECT_THROW(run_indentation_path(first, kill_after_five, control), Killed);
   }
-  IndentationSetup second(resume_case(method), 1);
+  IndentationSetup second(resume_case(method, local), 1);
   control.resume = true;
   std::size_t computed = 0;  // points computed after the resume (the others come from disk)
   const auto count = [&](const PathPoint&, const cont::Vector&) { return ++computed > 0; };
@@ -56,6 +59,7 @@ void expect_resume_reproduces(PathMethod method, const std::string& name) {
     EXPECT_NEAR(x.force, y.force, 1e-10 * (1 + x.force)) << i;
     EXPECT_NEAR(x.energy, y.energy, 1e-10 * (1 + x.energy)) << i;
     EXPECT_NEAR(a.points[i].work, b.points[i].work, 1e-10 * (1 + a.points[i].work)) << i;
+    EXPECT_NEAR(x.local_indentation, y.local_indentation, 1e-10) << i;
   }
 }
 
@@ -65,6 +69,12 @@ TEST(IndentationResume, PseudoArclengthResumedRunReproducesThePath) {
 
 TEST(IndentationResume, NaturalResumedRunReproducesThePath) {
   expect_resume_reproduces(PathMethod::kNatural, "shellindent_resume_natural");
+}
+
+// Issue 7: the local approach alpha is one more unknown of the checkpoint.
+TEST(IndentationResume, PseudoArclengthWithYangSunLocalLawReproducesThePath) {
+  expect_resume_reproduces(PathMethod::kPseudoArclength, "shellindent_resume_yang_sun",
+                           LocalContactModel::kYangSun);
 }
 
 }  // namespace

@@ -145,6 +145,18 @@ TEST(CaseFile, SandwichPlyListStudy) {
   EXPECT_EQ(c.output.vtu_every, 5);
 }
 
+// The local-indentation study (issue 7) is cap_00_path.yaml with contact.local: yang_sun.
+TEST(CaseFile, LocalIndentationStudy) {
+  const std::string dir = std::string(SHELLINDENT_SOURCE_DIR) + "/studies/";
+  const CaseFile local = read_case_file(dir + "cap_00_local.yaml");
+  const CaseFile path = read_case_file(dir + "cap_00_path.yaml");
+  EXPECT_EQ(local.contact.local, LocalContactModel::kYangSun);
+  EXPECT_EQ(path.contact.local, LocalContactModel::kNone);
+  EXPECT_EQ(local.mesh.size_apex, path.mesh.size_apex);
+  EXPECT_EQ(local.path.depth_max, path.path.depth_max);
+  EXPECT_EQ(local.output.dir, "results/cap_00_local/");
+}
+
 TEST(CaseFile, PlyListEntriesWithAnglesAndNamedLibraryMaterials) {
   const CaseFile c = parse_case_file(R"(
 material: paper-carbon-epoxy
@@ -203,7 +215,7 @@ shell: {type: rectangular_plate, length_x: 100 mm, length_y: 50 mm, edge: simply
 mesh: {element: bernstein4, symmetry: quarter}
 kinematics: linear
 indenter: {shape: superquadric, a: 5 mm, b: 6 mm, c: 7 mm, e1: 0.5, e2: 2, material: steel}
-contact: {surface: mid, solver: active_set, local: yang_sun, traction: interpolated, fbar: true}
+contact: {surface: mid, solver: active_set, local: vam, traction: interpolated, fbar: true}
 path: {method: natural, depth_max: 2 mm, step: 0.5 mm, step_min: 0.01 mm, step_max: 1 mm,
        depths: [0.5 mm, 1 mm, 2 mm]}
 output: {dir: out, vtu_every: 0, formats: [json]}
@@ -225,7 +237,7 @@ output: {dir: out, vtu_every: 0, formats: [json]}
   EXPECT_EQ(plate.indenter.material->name(), "steel");
   EXPECT_EQ(plate.contact.surface, ContactSurface::kMid);
   EXPECT_EQ(plate.contact.solver, ContactSolver::kActiveSet);
-  EXPECT_EQ(plate.contact.local, LocalContactModel::kYangSun);
+  EXPECT_EQ(plate.contact.local, LocalContactModel::kVam);
   EXPECT_EQ(plate.contact.traction, ContactTraction::kInterpolated);
   EXPECT_TRUE(plate.contact.fbar);
   EXPECT_EQ(plate.path.method, PathMethod::kNatural);

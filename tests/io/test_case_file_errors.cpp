@@ -65,6 +65,11 @@ TEST(CaseFileErrors, FbarNeedsTheInterpolatedTraction) {
                {"contact.fbar", "true", 4, "set `contact.traction: interpolated`"});
 }
 
+TEST(CaseFileErrors, PowerLawLocalContactNeedsNodalTraction) {
+  expect_error(kHead + "kinematics: linear\ncontact: {traction: interpolated, local: yang_sun}\n",
+               {"contact.local", "yang_sun", 4, "not available with the interpolated traction"});
+}
+
 TEST(CaseFileErrors, UnknownTopLevelKeySuggestsTheClosest) {
   expect_error(kHead + "meshh: {element: mitc4}\n",
                {"meshh", "{element: mitc4}", 3, "unknown key 'meshh' (did you mean 'mesh'?)"});

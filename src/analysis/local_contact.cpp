@@ -1,0 +1,59 @@
+#include "analysis/local_contact.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "section/vam_section.hpp"
+
+namespace si {
+
+const char* local_contact_name(LocalContactModel m) {
+  switch (m) {
+    case LocalContactModel::kHertz:
+      return "hertz";
+    case LocalContactModel::kYangSun:
+      return "yang_sun";
+    case LocalContactModel::kVam:
+      return "vam";
+    case LocalContactModel::kNone:
+      break;
+  }
+  return "none";
+}
+
+namespace {
+
+// Young's modulus and Poisson ratio of an elastic indenter (its 1-direction constants; an
+// indenter material is isotropic in practice); E = 0 for a rigid one.
+void indenter_constants(const CaseFile& c, double& E, double& nu) {
+  E = 0, nu = 0;
+  if (!c.indenter.material) return;
+  E = c.indenter.material->constants().E1;
+  nu = c.indenter.material->constants().nu12;
+}
+
+}  // namespace
+
+LocalContactLaw local_contact_law(const CaseFile& c) {
+  const LocalContactModel m = c.contact.local;
+  if (m == LocalContactModel::kNone) return {};
+  const Where where{c.file, "contact.local", local_contact_name(m), 0};
+  if (m == LocalContactModel::kVam) {
+    const double compliance = analyze_vam(c.laminate).c_L(0, 0);
+    if (!(compliance > 0))
+      throw_input("the section's face compliance c_L++ is not positive", where);
+    return {LocalLawKind::kThinLayer, 0.0, compliance};
+  }
+  if (c.indenter.shape != IndenterShape::kSphere)
+    throw_input("a Hertz-type local law needs a spherical indenter", where);
+  const EngineeringConstants& top = c.laminate.plies.back().material.constants();
+  double Ei = 0, nui = 0;
+  indenter_constants(c, Ei, nui);
+  const double Ri = c.indenter.radius;
+  if (m == LocalContactModel::kYangSun) return yang_sun_law(Ri, Ei, nui, top.E3);
+  const double R =
+      c.shell.type == ShellType::kSphericalCap ? 1 / (1 / Ri + 1 / c.shell.radius) : Ri;
+  return hertz_law(R, hertz_modulus(Ei, nui, top.E3, top.nu23));
+}
+
+}  // namespace si

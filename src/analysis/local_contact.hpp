@@ -1,0 +1,23 @@
+// The local contact law of a case (`contact.local`, docs/case-file.md; the laws in
+// contact/local_contact_law.hpp, the choices in docs/theory/local-indentation.md):
+//  * hertz: F = (4/3) E* R^0.5 alpha^1.5 with 1/E* = (1 - nu_i^2)/E_i + (1 - nu_23^2)/E_3, the
+//    laminate taken as an isotropic half-space with the top ply's transverse modulus E_3 and
+//    transverse Poisson ratio nu_23 (for an isotropic ply: E and nu, Hertz exactly), and
+//    1/R = 1/R_i + 1/R_cap for a spherical cap (two spheres), R = R_i otherwise;
+//  * yang_sun: F = k alpha^1.5, k = (4/3) R_i^0.5 / [(1 - nu_i^2)/E_i + 1/E_3] (Yang & Sun 1982,
+//    point-loads.md 4.4; their E_2 is the ply's transverse modulus, E_3 here);
+//  * vam: the thin-layer law alpha_i = c_L++ p_i of the section (vam.md 7.3-7.4).
+// A rigid indenter (no indenter.material) has no compliance term. hertz and yang_sun need a
+// sphere; the others throw an input error naming contact.local.
+#pragma once
+
+#include "contact/local_contact_law.hpp"
+#include "io/case_file.hpp"
+
+namespace si {
+
+LocalContactLaw local_contact_law(const CaseFile& c);
+// The case-file spelling of a choice: "none", "hertz", "yang_sun", "vam".
+const char* local_contact_name(LocalContactModel m);
+
+}  // namespace si

@@ -1,0 +1,40 @@
+// Local (through-thickness) contact compliance in series with a shell (issue 7,
+// docs/theory/local-indentation.md). A shell has no through-thickness compliance: its contact
+// face moves with the mid-surface. The local law adds the approach alpha of the indenter towards
+// the shell's contact face that the face's own flattening allows:
+//  * kPowerLaw: one approach for the whole contact, F = k alpha^1.5 with F the total contact
+//    force (whole shell). Hertz (point-loads.md 4.3): k = (4/3) E* R^0.5; Yang & Sun 1982
+//    (point-loads.md 4.4): k = (4/3) R^0.5 / [(1 - nu_i^2)/E_i + 1/E_2].
+//  * kThinLayer: a per-node approach c p_i, p_i the node's contact pressure and c the section's
+//    face compliance c_L++ (vam.md 7.3-7.4): linear, local to each node.
+// Units: mm, N, MPa.
+#pragma once
+
+namespace si {
+
+enum class LocalLawKind { kNone, kPowerLaw, kThinLayer };
+
+struct LocalContactLaw {
+  LocalLawKind kind = LocalLawKind::kNone;
+  double k = 0;           // kPowerLaw: N/mm^1.5
+  double compliance = 0;  // kThinLayer: mm/MPa
+
+  // kPowerLaw. F(alpha) = k sgn(alpha) |alpha|^1.5: the odd extension keeps Newton iterates with
+  // alpha < 0 defined (a solution has alpha >= 0 since F >= 0). F is C^1 with F'(0) = 0.
+  double force(double alpha) const;
+  double stiffness(double alpha) const;  // dF/dalpha = 1.5 k |alpha|^0.5, N/mm
+  double energy(double alpha) const;     // integral of F dalpha = (2/5) k |alpha|^2.5, N mm
+  double approach(double force) const;   // inverse: (F/k)^(2/3), mm
+};
+
+// Rigid indenter: pass indenter_E = 0 (its compliance term is then zero).
+// E* of Hertz: 1/E* = (1 - nu_i^2)/E_i + (1 - nu_s^2)/E_s (point-loads.md 4.3).
+double hertz_modulus(double indenter_E, double indenter_nu, double shell_E, double shell_nu);
+// Hertz's F = (4/3) E* R^0.5 alpha^1.5 (sphere of radius R on a half-space).
+LocalContactLaw hertz_law(double sphere_radius, double modulus);
+// Yang & Sun (1982), point-loads.md 4.4: k = (4/3) R^0.5 / [(1 - nu_i^2)/E_i + 1/E_2], E_2 the
+// transverse modulus of the top ply.
+LocalContactLaw yang_sun_law(double sphere_radius, double indenter_E, double indenter_nu,
+                             double transverse_E);
+
+}  // namespace si
