@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -32,8 +33,11 @@ inline CliResult run_cli(const std::string& args) {
   return r;
 }
 
+// One directory per test and per build tree (hash of the executable's path): ctest runs of
+// several checkouts on one machine must not share (and delete) each other's files.
 inline fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("shellindent_cli_" + name);
+  const std::string tree = std::to_string(std::hash<std::string>{}(SHELLINDENT_EXE) % 1000000);
+  const fs::path dir = fs::temp_directory_path() / ("shellindent_cli_" + tree + "_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
