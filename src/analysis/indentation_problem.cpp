@@ -101,10 +101,11 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
 
   tributary_area_.assign(nn, 0.0);
   neighbours_.assign(nn, {});
+  node_elements_.assign(nn, {});
   for (int e = 0; e < mesh.num_elements(); ++e) {
     bool supported = false;
     for (int n : mesh.elements[e]) {
-      if (n == model.apex_node()) apex_elements_.push_back(e);
+      node_elements_[n].push_back(e);
       for (int l = 0; l < 3; ++l) supported = supported || dofs_.is_prescribed(DofMap::dof(n, l));
     }
     if (supported) support_elements_.push_back(e);
@@ -613,9 +614,10 @@ void IndentationProblem::kinematic_quantities(const cont::Vector& z,
   const double sym = model_.symmetry_factor;
   const int apex = model_.apex_node();
   out.apex_deflection = s[apex].u.dot(direction_);
-  out.apex_curvature = nodal_strain_at(mesh, assembler_, *model_.element, s, apex, apex_elements_)
-                           .segment<3>(3)
-                           .transpose();
+  out.apex_curvature =
+      nodal_strain_at(mesh, assembler_, *model_.element, s, apex, node_elements_[apex])
+          .segment<3>(3)
+          .transpose();
   const double lambda_max = multipliers(z).cwiseAbs().maxCoeff();
   const Vector3d axis_point = mesh.nodes[apex];
   out.force = 0;
@@ -651,6 +653,31 @@ void IndentationProblem::local_quantities(const cont::Vector& z, IndentationStat
   }
 }
 
+void IndentationProblem::contact_curvatures(const cont::Vector& z, const std::vector<NodeState>& s,
+                                            IndentationState& out) const {
+  const cont::Vector lambda = multipliers(z);
+  const double lambda_max = lambda.size() ? lambda.cwiseAbs().maxCoeff() : 0.0;
+  bool any = false;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const double l = lambda[static_cast<Eigen::Index>(i)];
+    if (!(l > 1e-9 * lambda_max && l > 0)) continue;  // in contact: as contact_nodes counts
+    const int n = candidates_[i];
+    const Vector3d k =
+        nodal_strain_at(model_.mesh, assembler_, *model_.element, s, n, node_elements_[n])
+            .segment<3>(3)
+            .transpose();
+    out.contact_curvature_min = any ? out.contact_curvature_min.cwiseMin(k) : k;
+    out.contact_curvature_max = any ? out.contact_curvature_max.cwiseMax(k) : k;
+    any = true;
+  }
+  if (any && model_.symmetry_factor > 1) {
+    const double k12 =
+        std::max(std::abs(out.contact_curvature_min[1]), std::abs(out.contact_curvature_max[1]));
+    out.contact_curvature_min[1] = -k12;
+    out.contact_curvature_max[1] = k12;
+  }
+}
+
 IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   if (cached_state_ && h == cached_h_ && z.size() == cached_z_.size() && z == cached_z_)
     return *cached_state_;
@@ -676,6 +703,7 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
 
   kinematic_quantities(z, s, out);
   local_quantities(z, out);
+  contact_curvatures(z, s, out);
   out.min_gap = std::numeric_limits<double>::infinity();
   out.min_multiplier = std::numeric_limits<double>::infinity();
   const double depth = face_depth(z, h);

@@ -103,6 +103,10 @@ struct IndentationState {
   double local_indentation = 0;
   double local_energy = 0;
   Vector3d apex_curvature = Vector3d::Zero();  // k11, k12 + k21, k22 at the apex, 1/mm
+  // Extremes of the same curvatures over the nodes in contact (paper-notes item 7: the paper's
+  // figures do not say where their curvatures are taken). Quarter models: k12 changes sign in
+  // the mirrored quadrants, so its extremes are -+ max |k12|.
+  Vector3d contact_curvature_min = Vector3d::Zero(), contact_curvature_max = Vector3d::Zero();
   // KKT residuals: min gap (mm), min multiplier (N), max |lambda_i g_i| (N mm).
   double min_gap = 0, min_multiplier = 0, max_complementarity = 0;
   std::vector<int> nodes;           // candidate nodes
@@ -202,6 +206,8 @@ class IndentationProblem : public cont::Problem {
   // Thin-layer local law: the approach at candidate i for its multiplier, c_L lambda_i / A_i.
   double layer_approach(int i, double lambda) const;
   void local_quantities(const cont::Vector& z, IndentationState& out) const;
+  void contact_curvatures(const cont::Vector& z, const std::vector<NodeState>& s,
+                          IndentationState& out) const;
   const std::vector<NodeState>& shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
   void build_reaction_row();
   void kinematic_quantities(const cont::Vector& z, const std::vector<NodeState>& s,
@@ -222,12 +228,12 @@ class IndentationProblem : public cont::Problem {
   double t0_ = 0;                         // first touch travel
   double kappa_ = 1;                      // N/mm
   std::vector<int> candidates_;
-  std::vector<NodeContactGeometry> geometry_;  // per mesh node
-  std::vector<double> tributary_area_;         // per mesh node, mm^2
-  mutable std::vector<double> touch_guess_;    // per candidate: last s(p), a Newton guess
-  std::vector<std::vector<int>> neighbours_;   // per mesh node
-  std::vector<int> apex_elements_;             // elements that contain the apex node
-  std::vector<int> support_elements_;          // elements with a prescribed translation
+  std::vector<NodeContactGeometry> geometry_;    // per mesh node
+  std::vector<double> tributary_area_;           // per mesh node, mm^2
+  mutable std::vector<double> touch_guess_;      // per candidate: last s(p), a Newton guess
+  std::vector<std::vector<int>> neighbours_;     // per mesh node
+  std::vector<std::vector<int>> node_elements_;  // per mesh node: the elements containing it
+  std::vector<int> support_elements_;            // elements with a prescribed translation
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
   std::vector<CandidateSlots> slots_;

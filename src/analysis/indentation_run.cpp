@@ -303,11 +303,17 @@ std::vector<double> path_point_values(const PathPoint& p) {
           static_cast<double>(p.iterations),
           p.step,
           s.local_indentation,
-          s.local_energy};
+          s.local_energy,
+          s.contact_curvature_min[0],
+          s.contact_curvature_max[0],
+          s.contact_curvature_min[1],
+          s.contact_curvature_max[1],
+          s.contact_curvature_min[2],
+          s.contact_curvature_max[2]};
 }
 
 PathPoint path_point_from_values(const std::vector<double>& v) {
-  SI_REQUIRE(v.size() == 19, "a path point has 19 values");
+  SI_REQUIRE(v.size() == 25, "a path point has 25 values");
   PathPoint p;
   IndentationState& s = p.state;
   s.depth = v[0], s.force = v[1], s.reaction = v[2], s.apex_deflection = v[3];
@@ -316,6 +322,8 @@ PathPoint path_point_from_values(const std::vector<double>& v) {
   s.energy = v[10], p.work = v[11], s.min_gap = v[12], s.min_multiplier = v[13];
   s.max_complementarity = v[14], p.iterations = static_cast<int>(v[15]), p.step = v[16];
   s.local_indentation = v[17], s.local_energy = v[18];
+  s.contact_curvature_min = Vector3d(v[19], v[21], v[23]);
+  s.contact_curvature_max = Vector3d(v[20], v[22], v[24]);
   return p;
 }
 

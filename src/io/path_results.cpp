@@ -26,7 +26,13 @@ const char* kColumns[] = {"depth_mm",
                           "iterations",
                           "step",
                           "local_indent_mm",
-                          "local_energy_Nmm"};
+                          "local_energy_Nmm",
+                          "k11_contact_min_per_mm",
+                          "k11_contact_max_per_mm",
+                          "k12_contact_min_per_mm",
+                          "k12_contact_max_per_mm",
+                          "k22_contact_min_per_mm",
+                          "k22_contact_max_per_mm"};
 
 double monitor(const cont::Event& e, const std::vector<std::string>& names,
                const std::string& name) {
