@@ -434,13 +434,13 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
     }
   }
   if (u.local) J[alpha_diagonal_] -= options_.local.stiffness(z[u.alpha_index()]);
-  if (nonlinear) chart_.to_chart_jacobian(z.head(nf), r_free, jacobian_);
+  // Linear kinematics: no chart, T = I (no blocks).
+  const std::vector<ShellChart::RotationBlock> rotations =
+      nonlinear ? chart_.to_chart_jacobian(z.head(nf), r_free, jacobian_)
+                : std::vector<ShellChart::RotationBlock>{};
   try {
     if (krylov_)
-      krylov_->factorize(
-          jacobian_, nf,
-          nonlinear ? chart_.rotation_blocks(z.head(nf)) : std::vector<ShellChart::RotationBlock>{},
-          rows);
+      krylov_->factorize(jacobian_, nf, rotations, rows);
     else
       solver_->factorize(jacobian_);  // the first factorization analyses the pattern
   } catch (const Error& e) {

@@ -187,7 +187,7 @@ void fit_contact_law(const json& points, const StudyFit& f, double dh, json& row
     const double d = static_cast<double>(k) * dh;
     if (d > f.depth_max * (1 + 1e-12) || d > end * (1 + 1e-12)) break;
     if (d <= f.depth_min) continue;
-    const double force = value_at_depth(points, "force_N", std::min(d, end));
+    const double force = value_at_depth(points, "force_N", d);
     if (!std::isfinite(force)) continue;
     h.push_back(d);
     t.push_back(force);

@@ -107,31 +107,23 @@ void ShellChart::node_transform(const Eigen::VectorXd& x, const NodeRotation& ro
   drill = d.transpose() * W;
 }
 
-std::vector<ShellChart::RotationBlock> ShellChart::rotation_blocks(const Eigen::VectorXd& x) const {
-  std::vector<RotationBlock> out;
-  out.reserve(rotations_.size());
-  for (const NodeRotation& rot : rotations_) {
-    RotationBlock b;
-    b.eq_a = rot.eq_a;
-    b.eq_b = rot.eq_b;
-    Eigen::RowVector2d drill;
-    node_transform(x, rot, b.T, drill);
-    // One prescribed component: theta stays on the other reference axis, T is diagonal there.
-    if (rot.eq_a < 0 || rot.eq_b < 0) b.T = Matrix2d(b.T.diagonal().asDiagonal());
-    out.push_back(b);
-  }
-  return out;
-}
-
-void ShellChart::to_chart_jacobian(const Eigen::VectorXd& x, const Eigen::VectorXd& r,
-                                   SparseMatrix& K) const {
+std::vector<ShellChart::RotationBlock> ShellChart::to_chart_jacobian(const Eigen::VectorXd& x,
+                                                                     const Eigen::VectorXd& r,
+                                                                     SparseMatrix& K) const {
   SI_REQUIRE(K.cols() >= size() && K.rows() >= size() && r.size() == size(),
              "shell chart: Jacobian or residual of the wrong size");
   SI_REQUIRE(K.isCompressed(), "shell chart: the Jacobian must be compressed");
+  std::vector<RotationBlock> blocks;
+  blocks.reserve(rotations_.size());
   for (const NodeRotation& rot : rotations_) {
     Matrix2d T;
     Eigen::RowVector2d drill;
     node_transform(x, rot, T, drill);
+    RotationBlock block;
+    block.eq_a = rot.eq_a;
+    block.eq_b = rot.eq_b;
+    block.T = rot.eq_a >= 0 && rot.eq_b >= 0 ? T : Matrix2d(T.diagonal().asDiagonal());
+    blocks.push_back(block);
 
     // Columns: K T. A prescribed component has neither column nor chart coordinate; with the
     // other one free, theta stays on one reference axis and T is diagonal there (T(0,1) = 0).
@@ -162,6 +154,7 @@ void ShellChart::to_chart_jacobian(const Eigen::VectorXd& x, const Eigen::Vector
       for (SparseMatrix::InnerIterator it(K, c); it; ++it) it.valueRef() *= T(i, i);
     }
   }
+  return blocks;
 }
 
 }  // namespace si

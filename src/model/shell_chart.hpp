@@ -55,16 +55,16 @@ class ShellChart {
   // free dofs (rotation rows on the current axes). The two rotation columns of a node must have
   // the same sparsity pattern (true for assembled shell blocks), and the node's diagonal 2x2
   // rotation block must be in the pattern.
-  void to_chart_jacobian(const Eigen::VectorXd& x, const Eigen::VectorXd& r, SparseMatrix& K) const;
-
-  // The 2x2 blocks T(x) of the transform above, one per node with a free rotation component
+  // The 2x2 blocks T(x) of the transform, one per node with a free rotation component
   // (eq_b = -1 or eq_a = -1 when that component is prescribed; T is then diagonal there). With
   // them a caller can form T^T K T, the chart Hessian up to terms that vanish at equilibrium.
   struct RotationBlock {
     int eq_a = -1, eq_b = -1;
     Matrix2d T = Matrix2d::Identity();
   };
-  std::vector<RotationBlock> rotation_blocks(const Eigen::VectorXd& x) const;
+  // Returns the blocks T it applied.
+  std::vector<RotationBlock> to_chart_jacobian(const Eigen::VectorXd& x, const Eigen::VectorXd& r,
+                                               SparseMatrix& K) const;
 
  private:
   struct NodeRotation {
