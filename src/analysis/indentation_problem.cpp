@@ -373,6 +373,23 @@ bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector&
   return F.allFinite();
 }
 
+// d phi_i / d lambda_i: phi_a, plus the thin-layer approach's share through the gap.
+double IndentationProblem::multiplier_diagonal(int i, const NcpValue& phi) const {
+  return phi.d_a + phi.d_b * kappa_ * layer_approach(i, 1.0);
+}
+
+// The Jacobian entries of candidate i's multiplier row and column that are the same for nodal
+// and weighted gaps: the diagonal and, with a power-law local contact, the alpha coupling
+// (d g / d alpha = 1 where the gap reaches the indenter; alpha's row sums the multipliers).
+void IndentationProblem::add_multiplier_terms(int i, const NcpValue& phi, bool hits,
+                                              double* J) const {
+  const CandidateSlots& s = slots_[i];
+  J[s.diagonal] += multiplier_diagonal(i, phi);
+  if (layout().local == 0) return;
+  if (hits) J[s.alpha_column] += phi.d_b * kappa_;
+  J[s.alpha_row] += model_.symmetry_factor;
+}
+
 bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   ++counters_.factorizations;
   const int nf = chart_.size();
@@ -401,11 +418,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
       J[weighted_->column[e]] -= weighted_->C.valuePtr()[e];
       J[weighted_->row[e]] += phi.d_b * kappa_ * weighted_->C.valuePtr()[e];
     }
-    J[slots_[i].diagonal] += phi.d_a + phi.d_b * kappa_ * layer_approach(k, 1.0);
-    if (u.local) {
-      J[slots_[i].alpha_column] += phi.d_b * kappa_;  // d g~ / d alpha = 1 (weighted gaps over w)
-      J[slots_[i].alpha_row] += model_.symmetry_factor;
-    }
+    add_multiplier_terms(k, phi, true, J);  // weighted gaps always reach the indenter
   }
   for (std::size_t i = 0; !weighted_ && i < candidates_.size(); ++i) {
     const int ci = static_cast<int>(i);
@@ -416,7 +429,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
     if (krylov_) {
       rows[i].eq = s.eq;
       for (int r = 0; r < 5; ++r) rows[i].gradient[r] = g.gradient[r];
-      rows[i].a = phi.d_a + phi.d_b * kappa_ * layer_approach(ci, 1.0);  // J's diagonal
+      rows[i].a = multiplier_diagonal(ci, phi);
       rows[i].b = phi.d_b * kappa_;
     }
     for (int r = 0; r < 5; ++r) {
@@ -427,11 +440,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
         for (int c = 0; c < 5; ++c)
           if (s.eq[c] >= 0) J[s.block[5 * r + c]] -= lambda * g.gradient_derivative(r, c);
     }
-    J[s.diagonal] += phi.d_a + phi.d_b * kappa_ * layer_approach(ci, 1.0);
-    if (u.local) {
-      if (g.hits) J[s.alpha_column] += phi.d_b * kappa_;  // d g / d alpha = 1
-      J[s.alpha_row] += model_.symmetry_factor;
-    }
+    add_multiplier_terms(ci, phi, g.hits, J);
   }
   if (u.local) J[alpha_diagonal_] -= options_.local.stiffness(z[u.alpha_index()]);
   // Linear kinematics: no chart, T = I (no blocks).

@@ -202,6 +202,8 @@ class IndentationProblem : public cont::Problem {
                    double depth) const;
   double contact_gap(int i, const cont::Vector& z, const std::vector<NodeState>& s, double depth,
                      double lambda) const;
+  double multiplier_diagonal(int i, const NcpValue& phi) const;
+  void add_multiplier_terms(int i, const NcpValue& phi, bool hits, double* J) const;
   void build_weighted_gaps();
   // Thin-layer local law: the approach at candidate i for its multiplier, c_L lambda_i / A_i.
   double layer_approach(int i, double lambda) const;
