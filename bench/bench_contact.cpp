@@ -38,7 +38,7 @@ void report(benchmark::State& st, const IndentationSetup& s, const PathResult& r
   const double steps = static_cast<double>(r.points.size() - 1);
   long iterations = 0;
   for (const PathPoint& p : r.points) iterations += p.iterations;
-  const IndentationCounters& c = s.problem->counters();
+  const IndentationCounters c = s.problem->counters();
   st.counters["nodes"] = s.model.mesh.num_nodes();
   st.counters["shell_unknowns"] = s.problem->num_shell_unknowns();
   st.counters["candidates"] = static_cast<double>(s.problem->candidates().size());
@@ -46,6 +46,8 @@ void report(benchmark::State& st, const IndentationSetup& s, const PathResult& r
   st.counters["newton_per_step"] = iterations / steps;
   st.counters["factorizations_per_step"] = c.factorizations / steps;
   st.counters["residuals_per_step"] = c.residuals / steps;
+  st.counters["assemblies_per_step"] = c.tangent_assemblies / steps;
+  st.counters["force_assemblies_per_step"] = c.force_assemblies / steps;
   const ContactJacobianCounters k = s.problem->solver_counters();
   st.counters["lu_fallbacks"] = static_cast<double>(k.lu_fallbacks);
   st.counters["choleskys_per_step"] = k.cholesky / steps;

@@ -13,6 +13,7 @@ const Assembly& ChartAssembly::assemble(const Eigen::VectorXd& x, bool tangent) 
   assembler_.assemble(states_, ElementRequest{true, tangent}, assembly_);
   x_ = x;
   has_tangent_ = tangent;
+  ++(tangent ? tangent_assemblies_ : force_assemblies_);
   return assembly_;
 }
 

@@ -24,6 +24,9 @@ class ChartAssembly {
   const Assembly& force_at(const Eigen::VectorXd& x);
   // Node states of the last at() / force_at().
   const std::vector<NodeState>& states() const { return states_; }
+  // Assemblies actually computed (cache misses), with and without the tangent.
+  long tangent_assemblies() const { return tangent_assemblies_; }
+  long force_assemblies() const { return force_assemblies_; }
 
  private:
   const Assembly& assemble(const Eigen::VectorXd& x, bool tangent);
@@ -34,6 +37,8 @@ class ChartAssembly {
   std::vector<NodeState> states_;
   Eigen::VectorXd x_;  // chart point of the cached assembly (empty: none)
   bool has_tangent_ = false;
+  long tangent_assemblies_ = 0;
+  long force_assemblies_ = 0;
 };
 
 }  // namespace si

@@ -118,10 +118,12 @@ struct IndentationState {
 
 // Work done so far, for benchmarks and the run summary.
 struct IndentationCounters {
-  long residuals = 0;       // residual evaluations (each one element assembly, force only)
-  long factorizations = 0;  // Jacobian assemblies + sparse LU factorizations
+  long residuals = 0;       // residual() calls (an assembly unless the last one was at z)
+  long factorizations = 0;  // factorize() calls: Jacobian fills + factorizations
   long solves = 0;          // back-substitutions
   long evaluations = 0;     // evaluate() calls that were not cached (output, monitors)
+  long tangent_assemblies = 0;  // element assemblies actually computed, force + tangent
+  long force_assemblies = 0;    // and force only (nonlinear kinematics)
 };
 
 class IndentationProblem : public cont::Problem {
@@ -182,7 +184,12 @@ class IndentationProblem : public cont::Problem {
   Eigen::VectorXd layer_compliances() const;
   IndentationState evaluate(const cont::Vector& z, double h);
   const ShellModel& model() const { return model_; }
-  const IndentationCounters& counters() const { return counters_; }
+  IndentationCounters counters() const {
+    IndentationCounters c = counters_;
+    c.tangent_assemblies = shell_.tangent_assemblies();
+    c.force_assemblies = shell_.force_assemblies();
+    return c;
+  }
   // The preconditioned Krylov solver's work (zero with a direct LU).
   ContactJacobianCounters solver_counters() const {
     return krylov_ ? krylov_->counters() : ContactJacobianCounters{};
