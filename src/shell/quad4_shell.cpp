@@ -93,28 +93,45 @@ Matrix8x20d covariant_strain_derivative(const PointKinematics& p, const Rotation
   return B;
 }
 
-// K += sum_c s_c d2(e_c)/dq2 for the covariant strains at p, s_c covariant stress weights.
-void add_geometric_stiffness(const PointKinematics& p, const std::array<NodeState, 4>& nodes,
-                             const RotationBases& T, const Vector8d& s, Matrix20d& K) {
-  const Eigen::Vector4d &N = p.shape.N, &N1 = p.shape.N_xi, &N2 = p.shape.N_eta;
-  for (int i = 0; i < 4; ++i) {
-    const int ui = kShellNodeDofs * i;
-    for (int j = 0; j < 4; ++j) {
-      const int uj = kShellNodeDofs * j;
-      const double mixed = N1(i) * N2(j) + N2(i) * N1(j);
-      const double kuu = s(0) * N1(i) * N1(j) + s(1) * mixed + s(2) * N2(i) * N2(j);
-      const double kur = s(3) * N1(i) * N1(j) + s(4) * mixed + s(5) * N2(i) * N2(j) +
-                         (s(6) * N1(i) + s(7) * N2(i)) * N(j);
-      K.block<3, 3>(ui, uj).diagonal().array() += kuu;
-      K.block<3, 2>(ui, uj + 3) += kur * T[j];
-      K.block<2, 3>(uj + 3, ui) += kur * T[j].transpose();
-    }
-    // Second variation of the director: delta2 d_i = -(theta . theta') d_i.
-    const Vector3d w = s(3) * N1(i) * p.x_a[0] + s(4) * (N2(i) * p.x_a[0] + N1(i) * p.x_a[1]) +
-                       s(5) * N2(i) * p.x_a[1] + N(i) * (s(6) * p.x_a[0] + s(7) * p.x_a[1]);
-    K.block<2, 2>(ui + 3, ui + 3).diagonal().array() -= w.dot(nodes[i].d);
+// The geometric stiffness sum_c s_c d2(e_c)/dq2 of the covariant strains, s_c covariant stress
+// weights, summed over points. Every second derivative is a product of shape-function values
+// and nodal bases, so the points' contributions are summed as 4x4 nodal coefficients (and one
+// vector per node for the director's second variation) and spread over the 20x20 matrix once.
+class GeometricStiffness {
+ public:
+  void add(const PointKinematics& p, const Vector8d& s) {
+    const Eigen::Vector4d &N = p.shape.N, &N1 = p.shape.N_xi, &N2 = p.shape.N_eta;
+    const Eigen::Matrix4d mixed = N1 * N2.transpose() + N2 * N1.transpose();
+    uu_.noalias() += s(0) * N1 * N1.transpose() + s(1) * mixed + s(2) * N2 * N2.transpose();
+    ur_.noalias() += s(3) * N1 * N1.transpose() + s(4) * mixed + s(5) * N2 * N2.transpose() +
+                     (s(6) * N1 + s(7) * N2) * N.transpose();
+    // Second variation of the director: delta2 d_i = -(theta . theta') d_i, weighted by the
+    // strains' derivative with respect to d_i.
+    const Vector3d w1 = s(3) * p.x_a[0] + s(4) * p.x_a[1];
+    const Vector3d w2 = s(4) * p.x_a[0] + s(5) * p.x_a[1];
+    const Vector3d w0 = s(6) * p.x_a[0] + s(7) * p.x_a[1];
+    director_.noalias() += w1 * N1.transpose() + w2 * N2.transpose() + w0 * N.transpose();
   }
-}
+
+  // K += the accumulated terms (u-u, u-rotation and its transpose, rotation-rotation).
+  void add_to(const std::array<NodeState, 4>& nodes, const RotationBases& T, Matrix20d& K) const {
+    for (int i = 0; i < 4; ++i) {
+      const int ui = kShellNodeDofs * i;
+      for (int j = 0; j < 4; ++j) {
+        const int uj = kShellNodeDofs * j;
+        K.block<3, 3>(ui, uj).diagonal().array() += uu_(i, j);
+        K.block<3, 2>(ui, uj + 3) += ur_(i, j) * T[j];
+        K.block<2, 3>(uj + 3, ui) += ur_(i, j) * T[j].transpose();
+      }
+      K.block<2, 2>(ui + 3, ui + 3).diagonal().array() -= director_.col(i).dot(nodes[i].d);
+    }
+  }
+
+ private:
+  Eigen::Matrix4d uu_ = Eigen::Matrix4d::Zero();
+  Eigen::Matrix4d ur_ = Eigen::Matrix4d::Zero();
+  Eigen::Matrix<double, 3, 4> director_ = Eigen::Matrix<double, 3, 4>::Zero();
+};
 
 // Local frame (t1, t2, n) at p and the map from covariant to local strains (block diagonal,
 // e_local = L e_cov); area = |X,xi x X,eta|.
@@ -152,6 +169,16 @@ LocalFrame local_frame(const PointKinematics& p, const Vector3d& material_axis) 
   f.L.block<3, 3>(3, 3) = M;
   f.L.block<2, 2>(6, 6) = C;
   return f;
+}
+
+// B_local = L B_cov using L's block-diagonal structure (membrane, bending: M; shear: C): a
+// tenth of the work of the dense 8x8 product, which Eigen would also route through its general
+// (packing) matrix kernel at these sizes.
+void to_local(const LocalFrame& f, const Matrix8x20d& B, Matrix8x20d& out) {
+  const auto M = f.L.topLeftCorner<3, 3>();
+  out.topRows<3>().noalias() = M.lazyProduct(B.topRows<3>());
+  out.middleRows<3>(3).noalias() = M.lazyProduct(B.middleRows<3>(3));
+  out.bottomRows<2>().noalias() = f.L.bottomRightCorner<2, 2>().lazyProduct(B.bottomRows<2>());
 }
 
 // Strains and their first variation at the tying points of the assumed shear field.
@@ -203,10 +230,10 @@ class Quad4Evaluation {
     if (options_.shear == ShearTreatment::kMitc4) {
       const Eigen::Matrix<double, 2, 4> w = mitc4_shear_interpolation(xi, eta);
       e.tail<2>() = w * tying_.gamma;
-      B.bottomRows<2>() = w * tying_.B;
+      B.bottomRows<2>().noalias() = w.lazyProduct(tying_.B);
     }
     out.E = out.frame.L * e;
-    out.B = out.frame.L * B;
+    to_local(out.frame, B, out.B);
     out.G = options_.membrane == MembraneTreatment::kEas4
                 ? eas4_membrane_modes(centre_membrane_map_, centre_area_ / out.frame.area, xi, eta)
                 : EasModes::Zero();
@@ -214,22 +241,23 @@ class Quad4Evaluation {
   }
 
   // Geometric stiffness of covariant stress weights s at a point; with MITC the shear weights
-  // are passed to the tying points (accumulated, applied once by finish_geometric).
-  void add_geometric(double xi, double eta, const PointKinematics& kin, Vector8d s, Matrix20d& K) {
+  // are passed to the tying points (accumulated, added by finish_geometric).
+  void add_geometric(double xi, double eta, const PointKinematics& kin, Vector8d s) {
     if (options_.shear == ShearTreatment::kMitc4) {
       tying_weight_ += mitc4_shear_interpolation(xi, eta).transpose() * s.tail<2>();
       s.tail<2>().setZero();
     }
-    add_geometric_stiffness(kin, nodes_, T_, s, K);
+    geometric_.add(kin, s);
   }
 
-  void finish_geometric(Matrix20d& K) const {
-    if (options_.shear != ShearTreatment::kMitc4) return;
-    for (int t = 0; t < 4; ++t) {
-      Vector8d s = Vector8d::Zero();
-      s(6 + kMitc4TyingPoints[t].component) = tying_weight_(t);
-      add_geometric_stiffness(tying_.point[t], nodes_, T_, s, K);
-    }
+  void finish_geometric(Matrix20d& K) {
+    if (options_.shear == ShearTreatment::kMitc4)
+      for (int t = 0; t < 4; ++t) {
+        Vector8d s = Vector8d::Zero();
+        s(6 + kMitc4TyingPoints[t].component) = tying_weight_(t);
+        geometric_.add(tying_.point[t], s);
+      }
+    geometric_.add_to(nodes_, T_, K);
   }
 
  private:
@@ -239,6 +267,7 @@ class Quad4Evaluation {
   RotationBases T_;
   TyingData tying_;
   Eigen::Vector4d tying_weight_ = Eigen::Vector4d::Zero();
+  GeometricStiffness geometric_;
   Eigen::Matrix3d centre_membrane_map_ = Eigen::Matrix3d::Zero();  // M0 (eas_membrane.hpp)
   double centre_area_ = 0;                                         // det J0
 };
@@ -284,6 +313,48 @@ Matrix8d law_matrix(const ShellLaw& law) {
   return C;
 }
 
+// The material tangent sum_k dA_k B_k^T C B_k. It is symmetric: only its lower triangle is
+// computed, as column dot products of the points' stacked rows (dA B and C B, four points, 32
+// rows, at a time), and mirrored; the mirror makes it exactly symmetric.
+class MaterialTangent {
+ public:
+  explicit MaterialTangent(const Matrix8d& C) : C_(C) {}
+
+  void add(const Matrix8x20d& B, double dA) {
+    B_.middleRows<8>(8 * points_) = dA * B;
+    CB_.middleRows<8>(8 * points_).noalias() = C_.lazyProduct(B);
+    if (++points_ == kBatch) flush();
+  }
+
+  void add_to(Matrix20d& K) {
+    flush();
+    for (int j = 0; j < kShellElementDofs; ++j) {
+      K(j, j) += lower_(j, j);
+      for (int i = j + 1; i < kShellElementDofs; ++i) {
+        K(i, j) += lower_(i, j);
+        K(j, i) += lower_(i, j);
+      }
+    }
+  }
+
+ private:
+  static constexpr int kBatch = 4;
+  using Stack = Eigen::Matrix<double, 8 * kBatch, kShellElementDofs>;
+
+  void flush() {
+    if (points_ == 0) return;
+    B_.bottomRows(8 * (kBatch - points_)).setZero();  // rows of a partial batch
+    for (int j = 0; j < kShellElementDofs; ++j)
+      for (int i = j; i < kShellElementDofs; ++i) lower_(i, j) += B_.col(i).dot(CB_.col(j));
+    points_ = 0;
+  }
+
+  const Matrix8d& C_;
+  Stack B_, CB_;
+  Matrix20d lower_ = Matrix20d::Zero();
+  int points_ = 0;
+};
+
 // The evaluated integration points of one call with their weights dA = w |X,xi x X,eta| (paper
 // eq 54). At most 4 x 4 points.
 struct IntegrationPoints {
@@ -322,7 +393,10 @@ void condense_eas_membrane(const Matrix8d& C, bool tangent, IntegrationPoints& i
     const Eigen::Matrix<double, kEasMembraneModes, 3> Gt = ip.dA[k] * p.G.transpose();
     H.noalias() += Gt * C.topLeftCorner<3, 3>() * p.G;
     b.noalias() += Gt * (C.topRows<3>() * p.E);
-    if (tangent) L.noalias() += Gt.lazyProduct(C.topRows<3>() * p.B);
+    if (tangent) {
+      const Eigen::Matrix<double, 3, kShellElementDofs> CB = C.topRows<3>().lazyProduct(p.B);
+      L.noalias() += Gt.lazyProduct(CB);
+    }
   }
   const Eigen::LLT<Eigen::Matrix4d> H_inv(H);
   if (H_inv.info() != Eigen::Success)
@@ -366,20 +440,21 @@ void Quad4Shell::compute_at_state(const ElementGeometry& geometry,
   response.energy = 0;
   if (options_.membrane == MembraneTreatment::kEas4)
     condense_eas_membrane(C, request.tangent, ip, response.tangent);
+  MaterialTangent material(C);
   for (int k = 0; k < ip.n; ++k) {
     const auto& p = ip.point[k];
     const double dA = ip.dA[k];
     const Vector8d S = C * p.E;  // [N; Q], shell_law.hpp
     response.energy += 0.5 * p.E.dot(S) * dA;
-    if (request.force) response.force.noalias() += dA * p.B.transpose() * S;
+    if (request.force) response.force.noalias() += p.B.transpose() * (dA * S);
     if (request.tangent) {
-      const Matrix8x20d CB = dA * C * p.B;
-      response.tangent.noalias() += p.B.transpose().lazyProduct(CB);
-      element.add_geometric(ip.xi[k], ip.eta[k], p.kin, dA * p.frame.L.transpose() * S,
-                            response.tangent);
+      material.add(p.B, dA);
+      element.add_geometric(ip.xi[k], ip.eta[k], p.kin, dA * p.frame.L.transpose() * S);
     }
   }
-  if (request.tangent) element.finish_geometric(response.tangent);
+  if (!request.tangent) return;
+  material.add_to(response.tangent);
+  element.finish_geometric(response.tangent);
 }
 
 void Quad4Shell::compute(const ElementGeometry& geometry, const std::array<NodeState, 4>& nodes,
