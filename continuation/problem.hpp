@@ -26,7 +26,9 @@ class Problem {
   // Linearise dF/dx at (x, p) and factor it. false = failure (singular...) -> recoverable.
   virtual bool factorize(const Vector& x, double p) = 0;
 
-  // Solve (dF/dx) y = b in place with the last factorization. false = failure.
+  // Solve (dF/dx) y = b in place with the last factorization. false = failure. The solve may be
+  // inexact (an iterative solver stopped at a small relative residual): the correctors judge
+  // convergence on F itself, and the tangents and events tolerate errors far above roundoff.
   virtual bool solve(Vector& b) = 0;
 
   // dF/dp at (x, p); default: central finite difference of residual() with the relative step

@@ -20,8 +20,13 @@ constexpr int kMaxPreconditionerAge = 20;
 
 }  // namespace
 
-ContactJacobianSolver::ContactJacobianSolver(double kappa, const std::string& fallback)
-    : kappa_(kappa), fallback_name_(fallback) {}
+ContactJacobianSolver::ContactJacobianSolver(double kappa, const std::string& fallback,
+                                             double relative_tolerance)
+    : kappa_(kappa), fallback_name_(fallback) {
+  SI_REQUIRE(relative_tolerance > 0 && relative_tolerance < 1,
+             "contact Jacobian: the Krylov tolerance must lie in (0, 1)");
+  gmres_.relative_tolerance = relative_tolerance;
+}
 
 ContactJacobianSolver::~ContactJacobianSolver() = default;
 
@@ -49,7 +54,9 @@ void ContactJacobianSolver::analyze_shell(const SparseMatrix& J, int num_shell) 
   has_preconditioner_ = false;
 }
 
-// J's pattern changes with the candidate set: new slots, new rows.
+// J's pattern changes with the candidate set: new slots, new rows. The Cholesky factor stays:
+// it depends on the shell block and the rows it condensed, which the candidates appended by
+// Problem::adapt leave as they were (factorize() lets GMRES carry the new rows).
 void ContactJacobianSolver::map_jacobian(const SparseMatrix& J) {
   j_slot_.resize(H_.nonZeros());
   for (int c = 0; c < num_shell_; ++c) {
@@ -62,7 +69,6 @@ void ContactJacobianSolver::map_jacobian(const SparseMatrix& J) {
   analyzed_outer_.assign(J.outerIndexPtr(), J.outerIndexPtr() + J.outerSize() + 1);
   row_slots_.clear();
   lu_.reset();
-  has_preconditioner_ = false;
 }
 
 void ContactJacobianSolver::transpose_transform(
@@ -179,6 +185,14 @@ void ContactJacobianSolver::factorize(const SparseMatrix& J, int num_shell,
     const double ga = row.gradient[3], gb = row.gradient[4];
     row.gradient[3] = T(0, 0) * ga + T(1, 0) * gb;
     row.gradient[4] = T(0, 1) * ga + T(1, 1) * gb;
+  }
+  // Rows the factor has not seen (candidates appended since it was made) enter the
+  // preconditioner uncondensed (b = 0): dlambda_i = r_i / a_i. A shorter set than the factor's
+  // is not an appended one: it needs a new factor.
+  if (has_preconditioner_ && pre_rows_.size() > rows_.size()) has_preconditioner_ = false;
+  for (std::size_t i = pre_rows_.size(); has_preconditioner_ && i < rows_.size(); ++i) {
+    pre_rows_.push_back(rows_[i]);
+    pre_rows_.back().b = 0.0;
   }
   use_lu_ = false;
   ++preconditioner_age_;

@@ -12,6 +12,8 @@
 // UMFPACK's LU of J, its solves three times (docs/performance.md), and its pattern never changes
 // with the candidate set. Where H is not positive definite (past a limit point) or GMRES does not
 // converge, the solve falls back to an LU of J (the `fallback` solver, UMFPACK by default).
+// Candidates appended to the set (same shell block) keep the factor: their rows enter the
+// preconditioner uncondensed until the next refresh.
 #pragma once
 
 #include <array>
@@ -46,7 +48,9 @@ struct ContactJacobianCounters {
 class ContactJacobianSolver {
  public:
   // kappa: the problem's stiffness scale (N/mm). fallback: an LU solver name (linear_solver.hpp).
-  ContactJacobianSolver(double kappa, const std::string& fallback);
+  // relative_tolerance: GMRES stops at ||J y - b|| <= relative_tolerance ||b|| (in (0, 1)).
+  ContactJacobianSolver(double kappa, const std::string& fallback,
+                        double relative_tolerance = 1e-12);
   ~ContactJacobianSolver();
 
   // J: the full Jacobian (num_shell shell rows/columns first, then one row/column per row of

@@ -241,7 +241,9 @@ void IndentationProblem::build_pattern() {
   // The Krylov solver condenses rows on one node's dofs: not the weighted rows, which span the
   // node's elements, nor the local approach alpha, which couples every row (the direct LU then).
   if (options_.linear_solver == kPreconditionedKrylov && !weighted_ && !u.local) {
-    if (!krylov_) krylov_ = std::make_unique<ContactJacobianSolver>(kappa_, "umfpack");
+    if (!krylov_)
+      krylov_ =
+          std::make_unique<ContactJacobianSolver>(kappa_, "umfpack", options_.krylov_tolerance);
   } else {
     krylov_.reset();
     solver_ = make_linear_solver(

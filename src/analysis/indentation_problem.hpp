@@ -65,6 +65,15 @@ struct IndentationOptions {
   // The interpolated traction's rows span several nodes and a power-law local contact adds
   // the unknown alpha: those use the direct LU.
   std::string linear_solver = "cholesky_gmres";
+  // kPreconditionedKrylov: GMRES stops at a relative residual of krylov_tolerance. The Newton
+  // corrections need no more than 1e-6: an inexact Newton method with a constant forcing term
+  // (Dembo, Eisenstat & Steihaug 1982, SIAM J. Numer. Anal. 19:400-408) has
+  // ||F_k+1|| <= eta ||F_k|| + O(||F_k||^2), and eta = 1e-6 is far below the contraction Newton
+  // reaches within the corrector's tolerance: the iteration counts are those of exact solves
+  // (measured identical on the 1e4-unknown cap over 0-10 mm) at 2.5 instead of 3.9 products per
+  // solve. Convergence is judged on the residual, so eta does not limit the solution's accuracy;
+  // the tangents and the bordered solves of the continuation carry errors of order eta.
+  double krylov_tolerance = 1e-6;
   int threads = 0;  // element assembly (0 = OpenMP default)
   // The paper's option (contact.traction: interpolated; interpolated_contact.hpp), linear
   // kinematics only: the traction is interpolated from nodal values t-bar_i and the gaps are the
@@ -118,10 +127,10 @@ struct IndentationState {
 
 // Work done so far, for benchmarks and the run summary.
 struct IndentationCounters {
-  long residuals = 0;       // residual() calls (an assembly unless the last one was at z)
-  long factorizations = 0;  // factorize() calls: Jacobian fills + factorizations
-  long solves = 0;          // back-substitutions
-  long evaluations = 0;     // evaluate() calls that were not cached (output, monitors)
+  long residuals = 0;           // residual() calls (an assembly unless the last one was at z)
+  long factorizations = 0;      // factorize() calls: Jacobian fills + factorizations
+  long solves = 0;              // back-substitutions
+  long evaluations = 0;         // evaluate() calls that were not cached (output, monitors)
   long tangent_assemblies = 0;  // element assemblies actually computed, force + tangent
   long force_assemblies = 0;    // and force only (nonlinear kinematics)
 };

@@ -9,6 +9,8 @@
 
 #include <Eigen/Dense>
 
+#include "core/error.hpp"
+
 namespace si {
 namespace {
 
@@ -116,6 +118,50 @@ TEST(ContactJacobianSolver, DrillingTermAndStaleFactorStayExact) {
   solver.factorize(J2, kShell, s.rotations, s.rows);
   expect_matches_dense_lu(solver, J2);
   EXPECT_EQ(solver.counters().lu_fallbacks, 0);
+}
+
+// Candidates appended to the set (Problem::adapt) change J's pattern but not the shell block:
+// the factor is kept, the new rows enter the preconditioner uncondensed, and the solve stays
+// that of the exact J.
+TEST(ContactJacobianSolver, AppendedRowsKeepTheFactorAndStayExact) {
+  Synthetic s = make_synthetic();
+  const ContactJacobianRow appended = s.rows.back();
+  s.rows.pop_back();
+  ContactJacobianSolver solver(kKappa, "umfpack");
+  const SparseMatrix J1 = s.jacobian();
+  solver.factorize(J1, kShell, s.rotations, s.rows);
+  expect_matches_dense_lu(solver, J1);
+  s.rows.push_back(appended);   // inactive
+  s.rows.push_back(s.rows[1]);  // and a partly active one on node 1
+  s.rows.back().a = 0.2;
+  const SparseMatrix J2 = s.jacobian();
+  ASSERT_NE(J2.rows(), J1.rows());
+  solver.factorize(J2, kShell, s.rotations, s.rows);
+  expect_matches_dense_lu(solver, J2);
+  EXPECT_EQ(solver.counters().cholesky, 1);
+  EXPECT_EQ(solver.counters().lu_fallbacks, 0);
+}
+
+// The Newton systems are solved to a relative residual (the inexact Newton forcing term of
+// IndentationOptions::krylov_tolerance): the residual of the returned solution is within it,
+// and a looser tolerance takes no more products than a tight one.
+TEST(ContactJacobianSolver, SolvesToTheRequestedRelativeResidual) {
+  Synthetic s = make_synthetic();
+  s.D(3, 4) = 0.4;  // an unsymmetric part: GMRES needs several products
+  s.D(4, 3) = -0.2;
+  const SparseMatrix J = s.jacobian();
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(J.rows(), -2.0, 1.0);
+  long products[2] = {0, 0};
+  const double tolerances[2] = {1e-4, 1e-12};
+  for (int k = 0; k < 2; ++k) {
+    ContactJacobianSolver solver(kKappa, "umfpack", tolerances[k]);
+    solver.factorize(J, kShell, s.rotations, s.rows);
+    const Eigen::VectorXd x = solver.solve(b);
+    EXPECT_LE((J * x - b).norm(), tolerances[k] * b.norm()) << tolerances[k];
+    products[k] = solver.counters().krylov_products;
+  }
+  EXPECT_LE(products[0], products[1]);
+  EXPECT_THROW(ContactJacobianSolver(kKappa, "umfpack", 0.0), Error);
 }
 
 // An indefinite shell block (past a limit point) has no Cholesky factor: the LU takes over.
