@@ -59,7 +59,9 @@ inline const char* const kPreconditionedKrylov = "cholesky_gmres";
 struct IndentationOptions {
   double contact_offset = 0;    // c: contact face above the reference surface along d, mm
   double candidate_depth = 12;  // mm of travel past first touch (see the header)
-  NcpFunction ncp = NcpFunction::kFischerBurmeister;
+  // Fischer-Burmeister on the feasible quadrant, min outside (ncp_function.hpp); kMin for the
+  // active-set cross-check.
+  NcpFunction ncp = NcpFunction::kFischerBurmeisterMin;
   // The Jacobian's solver: kPreconditionedKrylov (contact_jacobian_solver.hpp; an LU of the
   // Jacobian where it cannot help) or a direct LU, "umfpack" | "klu" (the Jacobian is unsymmetric).
   // The interpolated traction's rows span several nodes and a power-law local contact adds

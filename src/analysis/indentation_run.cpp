@@ -31,7 +31,7 @@ IndentationOptions options_of(const CaseFile& c, int threads, const std::string&
   // own motion towards it; adapt() grows the set if contact still spreads past it.
   o.candidate_depth = 1.2 * c.path.depth_max + 1.0;
   o.ncp = c.contact.solver == ContactSolver::kActiveSet ? NcpFunction::kMin
-                                                        : NcpFunction::kFischerBurmeister;
+                                                        : NcpFunction::kFischerBurmeisterMin;
   o.threads = threads;
   // The paper's option (issue #4 item 3); the case file refuses it with nonlinear kinematics.
   o.interpolated_traction = c.contact.traction == ContactTraction::kInterpolated;

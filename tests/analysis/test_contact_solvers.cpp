@@ -1,4 +1,4 @@
-// The contact solve at fixed depths: KINSOL on the Fischer-Burmeister system against the
+// The contact solve at fixed depths: KINSOL on the Fischer-Burmeister-type system against the
 // primal-dual active-set method (issue 4 acceptance: agreement to 1e-8 relative), and the KKT
 // conditions and global equilibrium at every converged depth.
 #include <gtest/gtest.h>
@@ -17,6 +17,7 @@ using testing::IndentationFixture;
 struct Path {
   std::vector<cont::Vector> points;
   std::vector<IndentationState> states;
+  int iterations = 0;  // Newton iterations in all
 };
 
 Path kinsol_path(IndentationProblem& p, const std::vector<double>& depths) {
@@ -27,6 +28,7 @@ Path kinsol_path(IndentationProblem& p, const std::vector<double>& depths) {
     EXPECT_TRUE(r.converged) << "h = " << h << ": " << r.reason;
     out.points.push_back(z);
     out.states.push_back(p.evaluate(z, h));
+    out.iterations += r.iterations;
   }
   return out;
 }
@@ -78,6 +80,28 @@ TEST(ContactSolvers, KinsolAndActiveSetAgreeOnTheCap_Nonlinear) {
 
 TEST(ContactSolvers, KinsolAndActiveSetAgreeOnTheCap_Linear) {
   expect_solvers_agree("linear");
+}
+
+// The KINSOL runs' complementarity function (Fischer-Burmeister where lambda, kappa g >= 0, min
+// elsewhere: ncp_function.hpp) has Fischer-Burmeister's solutions, and from each depth's
+// starting point (the previous solution, so that new contact nodes start infeasible) KINSOL
+// needs fewer iterations with it (measured: 26 against 33 over the five depths).
+TEST(ContactSolvers, FischerBurmeisterMinHasTheSolutionsOfFischerBurmeisterInFewerIterations) {
+  const std::vector<double> depths{0.25, 0.5, 0.75, 1.0, 1.5};
+  IndentationOptions fb_options;
+  fb_options.ncp = NcpFunction::kFischerBurmeister;
+  IndentationFixture fb(coarse_cap_case("nonlinear", "[0/0]2S"), fb_options);
+  IndentationFixture hybrid(coarse_cap_case("nonlinear", "[0/0]2S"));
+  const Path a = kinsol_path(*fb.problem, depths);
+  const Path b = kinsol_path(*hybrid.problem, depths);
+  const int nf = fb.problem->num_shell_unknowns();
+  for (std::size_t k = 0; k < depths.size(); ++k) {
+    const double F = a.states[k].force;
+    EXPECT_NEAR(a.states[k].force, b.states[k].force, 1e-9 * F) << depths[k];
+    const double u = a.points[k].head(nf).cwiseAbs().maxCoeff();
+    EXPECT_LT((a.points[k].head(nf) - b.points[k].head(nf)).cwiseAbs().maxCoeff(), 1e-9 * u);
+  }
+  EXPECT_LT(b.iterations, a.iterations);
 }
 
 }  // namespace

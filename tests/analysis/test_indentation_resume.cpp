@@ -12,7 +12,7 @@ namespace si {
 namespace {
 
 CaseFile resume_case(PathMethod method, LocalContactModel local) {
-  CaseFile c = testing::coarse_cap_path_case("[0/0]2S", method, 0.8, 0.1, 0.15);
+  CaseFile c = testing::coarse_cap_path_case("[0/0]2S", method, 1.0, 0.1, 0.15);
   c.contact.local = local;
   return c;
 }
