@@ -75,12 +75,12 @@ Point to_point(const json& j) {
   return p;
 }
 
-json event_json(const Event& e) {
+json event_json(const Event& e, bool with_x) {
   return {{"type", e.name},
           {"monitor", e.monitor},
           {"against", e.against},
           {"p", number(e.p)},
-          {"x", vector(e.x)},
+          {"x", with_x ? vector(e.x) : json::array()},
           {"monitors", vector(e.monitors)},
           {"step", e.step},
           {"located", e.located},
@@ -123,7 +123,7 @@ json branch_json(const Branch& b, bool points_x) {
   json points = json::array();
   for (const auto& p : b.points) points.push_back(point_json(p, points_x));
   json events = json::array();
-  for (const auto& e : b.events) events.push_back(event_json(e));
+  for (const auto& e : b.events) events.push_back(event_json(e, points_x));
   return {
       {"monitor_names", b.monitor_names}, {"points", points},   {"events", events},
       {"status", status_name(b.status)},  {"reason", b.reason}, {"failed_steps", b.failed_steps}};

@@ -19,7 +19,7 @@ struct Checkpoint {
 
 // Writes `path` atomically: to "<path>.tmp" first, then renamed over `path`, so a run killed
 // while writing leaves the previous checkpoint intact. Throws std::runtime_error on I/O errors.
-// With points_x = false the branch's points are written without x (see
+// With points_x = false the branch's points and events are written without x (see
 // Settings::checkpoint_keeps_x); the state keeps its x in any case.
 void save_checkpoint(const std::string& path, const Checkpoint& checkpoint, bool points_x = true);
 

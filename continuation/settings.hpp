@@ -92,9 +92,10 @@ struct Settings {
   // and at the end of the run; empty path = none.
   std::string checkpoint_path;
   int checkpoint_interval = 0;
-  // false: the checkpoint keeps x only for the current and previous state and the events, not
-  // for every point (a resumed branch then has empty x before the checkpoint). For large
-  // problems, where every point's x would make each checkpoint O(steps * n).
+  // false: the checkpoint keeps x only for the current and previous state, not for every point
+  // and event (a resumed branch then has empty x before the checkpoint and in the events found
+  // before it). For large problems, where every point's and event's x would make each checkpoint
+  // O(steps * n): 77 MB of JSON at 1e5 unknowns with the events' x, on the cap at 10 mm.
   bool checkpoint_keeps_x = true;
 
   void validate() const;

@@ -63,6 +63,11 @@ void expect_same_branch(const Branch& a, const Branch& b, double tol, std::size_
   for (std::size_t i = 0; i < a.events.size(); ++i) {
     EXPECT_EQ(a.events[i].name, b.events[i].name);
     EXPECT_NEAR(a.events[i].p, b.events[i].p, tol);
+    if (b.events[i].step < static_cast<int>(without_x)) {
+      EXPECT_EQ(b.events[i].x.size(), 0);  // found before the checkpoint, written without x
+      continue;
+    }
+    EXPECT_LE((a.events[i].x - b.events[i].x).lpNorm<Eigen::Infinity>(), tol) << "event " << i;
   }
 }
 
@@ -163,6 +168,17 @@ TEST(ContCheckpoint, JsonRoundTripIsExact) {
   EXPECT_EQ(r.branch.events[0].type, EventType::kInflection);
   EXPECT_EQ(r.branch.events[0].against, "b");
   EXPECT_EQ(r.branch.events[0].p, 1.0 / 7.0);
+  EXPECT_TRUE((r.branch.events[0].x.array() == pt.x.array()).all());
+
+  // Without the points' x (Settings::checkpoint_keeps_x = false) the events lose theirs too;
+  // the state keeps its own.
+  save_checkpoint(path, c, false);
+  const Checkpoint lean = load_checkpoint(path);
+  fs::remove(path);
+  EXPECT_EQ(lean.branch.points[0].x.size(), 0);
+  EXPECT_EQ(lean.branch.events[0].x.size(), 0);
+  EXPECT_EQ(lean.branch.events[0].p, 1.0 / 7.0);
+  EXPECT_TRUE((lean.state.current.point.x.array() == pt.x.array()).all());
 }
 
 TEST(ContCheckpoint, MissingOrForeignFileRejectedWithItsName) {
