@@ -47,12 +47,13 @@ class PathRecorder {
   PathRecorder(PathResult& result, const PathCallback& callback)
       : result_(result), callback_(callback) {}
   bool add(IndentationProblem& problem, const cont::Vector& z, double h, int iterations,
-           double step) {
+           double step, const Eigen::VectorXd& depth_slopes = {}) {
     PathPoint p;
     p.index = static_cast<int>(result_.points.size());
     p.state = problem.evaluate(z, h);
     p.iterations = iterations;
     p.step = step;
+    p.depth_slopes = depth_slopes;
     if (!result_.points.empty()) {
       const IndentationState& prev = result_.points.back().state;
       p.work = result_.points.back().work +
@@ -168,6 +169,16 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   return c;
 }
 
+// The monitors' derivatives in the depth at a continuation point: their slopes along the branch
+// over the depth's, d m / d s / (d h / d s); NaN near a fold (|dh/ds| < 1e-3 of the unit
+// tangent), where the depth is no parameter of the branch.
+Eigen::VectorXd depth_slopes(const cont::Point& pt) {
+  if (pt.monitor_slopes.size() == 0) return {};
+  if (!(std::abs(pt.tangent_p) > 1e-3))
+    return Eigen::VectorXd::Constant(pt.monitor_slopes.size(), std::nan(""));
+  return pt.monitor_slopes / pt.tangent_p;
+}
+
 // The run's own part of a checkpoint, beside the library's: the candidate set (append-only, so
 // a checkpoint's size tells how much of it applies) and the points written so far.
 std::string sidecar_path(const std::string& checkpoint) {
@@ -206,6 +217,7 @@ cont::Checkpoint restore(const std::string& checkpoint, IndentationProblem& prob
   for (std::size_t i = 0; i < kept; ++i) {
     r.points.push_back(path_point_from_values(side["points"][i].get<std::vector<double>>()));
     r.points.back().index = static_cast<int>(i);
+    r.points.back().depth_slopes = depth_slopes(c.branch.points[i]);
   }
   return c;
 }
@@ -221,7 +233,8 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   settings.checkpoint_keeps_x = false;  // the points live in the sidecar
   PathRecorder rec(r, callback);
   const cont::Callback on_point = [&](const cont::Point& pt, const cont::Branch&) {
-    const bool go_on = rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step);
+    const bool go_on =
+        rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step, depth_slopes(pt));
     if (!control.checkpoint.empty()) write_sidecar(control.checkpoint, *s.problem, r);
     return go_on;
   };

@@ -50,6 +50,9 @@ struct PathPoint {
   int iterations = 0;  // corrector (Newton / active-set) iterations that produced the point
   double step = 0;     // step that produced it (depth for grids, arclength for pseudo_arclength)
   double work = 0;     // indenter work so far, trapezoidal integral of force over depth, N mm
+  // d(monitor)/d(depth) along the branch, one per PathResult::monitor_names (continuation runs;
+  // NaN where the branch is nearly vertical in depth, at a fold); empty where unknown.
+  Eigen::VectorXd depth_slopes;
 };
 
 // A point's scalar results in the order of path.csv's columns (io/path_results.hpp, docs/

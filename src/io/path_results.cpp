@@ -1,6 +1,7 @@
 #include "io/path_results.hpp"
 
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 #include "analysis/local_contact.hpp"
@@ -33,6 +34,50 @@ const char* kColumns[] = {"depth_mm",
                           "k12_contact_max_per_mm",
                           "k22_contact_min_per_mm",
                           "k22_contact_max_per_mm"};
+
+// The columns of path_grid.csv interpolated by cubic Hermite from the points' depth slopes
+// (smooth along the branch between contact changes). The work's slope is the force, and so is
+// the strain energy's without a local law (dU/dh = T_N at equilibrium); the contact radius and
+// area step from node to node, and the counts and residuals are no functions to interpolate:
+// those stay linear.
+const char* kHermiteColumns[] = {"force_N", "apex_w_mm", "k11_per_mm", "k12_per_mm", "k22_per_mm"};
+
+int column_index(const std::string& name) {
+  for (std::size_t c = 0; c < std::size(kColumns); ++c)
+    if (name == kColumns[c]) return static_cast<int>(c);
+  return -1;
+}
+
+// Point p's slope of column c in the depth (NaN if unknown).
+double column_slope(const PathPoint& p, const std::vector<std::string>& monitors, const char* c) {
+  for (std::size_t m = 0; m < monitors.size(); ++m)
+    if (monitors[m] == c && static_cast<Eigen::Index>(m) < p.depth_slopes.size())
+      return p.depth_slopes[static_cast<Eigen::Index>(m)];
+  return std::nan("");
+}
+
+// The values at depth d inside the segment from a to b: cubic Hermite in the depth for the
+// kHermiteColumns whose slopes are known at both ends (error O(dh^4) where the branch is smooth,
+// against O(dh^2) for the linear interpolation used otherwise).
+std::vector<double> interpolate(const PathPoint& a, const PathPoint& b, double d,
+                                const std::vector<std::string>& monitors) {
+  const double d0 = a.state.depth, dd = b.state.depth - d0, t = (d - d0) / dd;
+  const std::vector<double> va = path_point_values(a), vb = path_point_values(b);
+  std::vector<double> out(va.size());
+  for (std::size_t c = 0; c < va.size(); ++c) out[c] = (1 - t) * va[c] + t * vb[c];
+  const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t);
+  const double h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
+  const auto hermite = [&](int c, double sa, double sb) {
+    if (c >= 0 && std::isfinite(sa) && std::isfinite(sb))
+      out[c] = h00 * va[c] + h10 * dd * sa + h01 * vb[c] + h11 * dd * sb;
+  };
+  for (const char* name : kHermiteColumns)
+    hermite(column_index(name), column_slope(a, monitors, name), column_slope(b, monitors, name));
+  const int force = column_index("force_N"), local = column_index("local_energy_Nmm");
+  hermite(column_index("work_Nmm"), va[force], vb[force]);
+  if (va[local] == 0 && vb[local] == 0) hermite(column_index("energy_Nmm"), va[force], vb[force]);
+  return out;
+}
 
 double monitor(const cont::Event& e, const std::vector<std::string>& names,
                const std::string& name) {
@@ -80,10 +125,7 @@ std::string path_grid_csv(const PathResult& result, double dh, double depth_max)
       if (i + 1 == pts.size()) break;
       const double d1 = pts[i + 1].state.depth;
       if ((d - d0) * (d - d1) < 0) {  // inside this segment: first passage
-        const double t = (d - d0) / (d1 - d0);
-        const std::vector<double> a = path_point_values(pts[i]);
-        const std::vector<double> b = path_point_values(pts[i + 1]);
-        for (std::size_t c = 0; c < a.size(); ++c) os << (1 - t) * a[c] + t * b[c] << ',';
+        for (double v : interpolate(pts[i], pts[i + 1], d, result.monitor_names)) os << v << ',';
         os << "1\n";
         break;
       }

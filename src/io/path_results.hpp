@@ -7,7 +7,9 @@
 //   path.json   the same points plus the run's description, status and events
 //   events.json the located events (type, monitor, depth, force, curvatures, step)
 //   path_grid.csv (pseudo-arclength runs) the same columns at fixed depths 0, dh, 2 dh, ...,
-//     interpolated linearly on the branch between its converged points, plus a last column
+//     interpolated on the branch between its converged points (force, apex deflection and
+//     curvatures by cubic Hermite with the points' depth slopes, the rest linearly), plus a last
+//     column
 //     `interpolated` (0: a converged point, 1: interpolated); where a snap-back passes a depth
 //     several times, its first passage
 // Text is produced here; the caller writes it atomically (io/atomic_file.hpp).
