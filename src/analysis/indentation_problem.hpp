@@ -243,6 +243,7 @@ class IndentationProblem : public cont::Problem {
   std::vector<NodeState> linear_states_;  // linear kinematics: node states at the last x
   Eigen::VectorXd reaction_row_;          // linear kinematics: support reaction along e = r_e . x
   double t0_ = 0;                         // first touch travel
+  double touch_roundoff_ = 0;             // mm: |gap| below it is a touch (power law only)
   double kappa_ = 1;                      // N/mm
   std::vector<int> candidates_;
   std::vector<NodeContactGeometry> geometry_;    // per mesh node
