@@ -122,16 +122,25 @@ TEST(LocalIndentationLaw, YangSunSteelBallOnGraphiteEpoxy_WorkedExample_PointLoa
 
 // The law of a case: the paper's cap (carbon/epoxy, E_3 = 10 GPa, nu_23 of the library), rigid
 // 12.7 mm sphere. yang_sun: k = (4/3) 12.7^0.5 E_3 = 47 516 N/mm^1.5 (point-loads.md 4.4 with
-// a rigid ball); hertz: E* = E_3 / (1 - nu_23^2), R = 1/(1/12.7 + 1/80.9) (sphere on the cap).
+// a rigid ball), dent radius 12.7 mm; hertz: E* = E_3 / (1 - nu_23^2), R = 1/(1/12.7 + 1/80.9)
+// (sphere on the cap), also the dent's radius.
 TEST(LocalIndentationLaw, OfThePaperCap_YangSunAndHertzConstants) {
   CaseFile c = testing::coarse_cap_case("nonlinear", "[0/90]2S");
   c.contact.local = LocalContactModel::kYangSun;
-  EXPECT_NEAR(local_contact_law(c).k, 4.0 / 3.0 * std::sqrt(12.7) * 10000.0, 1e-9 * 47516.0);
+  const double k_yang_sun = 4.0 / 3.0 * std::sqrt(12.7) * 10000.0;
+  test::record_verification(kTable,
+                            "yang_sun k of the paper's cap (E_3 = 10 GPa, rigid 12.7 mm sphere)",
+                            k_yang_sun, local_contact_law(c).k, 1e-9, "point-loads.md 4.4");
+  EXPECT_NEAR(local_contact_law(c).k, k_yang_sun, 1e-9 * 47516.0);
+  EXPECT_EQ(local_contact_law(c).radius, 12.7);  // the dent's radius: the indenter's
   c.contact.local = LocalContactModel::kHertz;
   const double nu23 = c.laminate.plies.back().material.constants().nu23;
   const double R = 1 / (1 / 12.7 + 1 / 80.9);
-  EXPECT_NEAR(local_contact_law(c).k, 4.0 / 3.0 * std::sqrt(R) * 10000.0 / (1 - nu23 * nu23),
-              1e-9 * 47516.0);
+  const double k_hertz = 4.0 / 3.0 * std::sqrt(R) * 10000.0 / (1 - nu23 * nu23);
+  test::record_verification(kTable, "hertz k of the paper's cap (sphere on the cap: R = 10.98 mm)",
+                            k_hertz, local_contact_law(c).k, 1e-9, "point-loads.md 4.3");
+  EXPECT_NEAR(local_contact_law(c).k, k_hertz, 1e-9 * 47516.0);
+  EXPECT_NEAR(local_contact_law(c).radius, R, 1e-12 * R);  // the relative radius
   c.contact.local = LocalContactModel::kNone;
   EXPECT_EQ(local_contact_law(c).kind, LocalLawKind::kNone);
 }
