@@ -201,6 +201,9 @@ TEST(RunCommand, LocalLawAddsTheLocalIndentationColumnToTheTable) {
     EXPECT_NEAR(rows[i][2] + rows[i][3], rows[i][0], 2e-5);  // w + alpha = h (printed digits)
   }
   EXPECT_GT(rows.back()[3], 0.0);
+  // The dent profile's radius: hertz's relative radius of the sphere on the cap.
+  EXPECT_NEAR(json["local_contact"]["dent_radius_mm"].get<double>(), 1 / (1 / 12.7 + 1 / 80.9),
+              1e-9);
 }
 
 }  // namespace
