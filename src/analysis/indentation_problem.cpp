@@ -101,7 +101,7 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
   t0_ = *first;
   double extent = 0;
   for (const Vector3d& p : points) extent = std::max(extent, p.cwiseAbs().maxCoeff());
-  touch_roundoff_ = 1e-12 * (1 + std::abs(t0_) + extent);
+  touch_roundoff_ = 1e-13 * (1 + std::abs(t0_) + extent);
   if (options_.local.kind == LocalLawKind::kPowerLaw)
     measure_dent_radii(points, reachable[first - travel.begin()]);
 
@@ -334,13 +334,6 @@ NodeGap IndentationProblem::gap(int i, const std::vector<NodeState>& s, double h
   }
   if (g.hits) {
     touch_guess_[i] = g.touch_travel;
-    // The first-touch node's gap at the start is zero only to the travel's roundoff (s(p) is a
-    // Newton solve, and the linearised gap's reference point is recomputed), and a power law's
-    // start is regular only at the Fischer-Burmeister kink (0, 0), where d_b > 0 puts the
-    // dent's rate into the alpha column (local-indentation.md 3): a gap within roundoff is a
-    // touch. Measured: 1.8e-15 mm on a linear cap made the start singular.
-    if (options_.local.kind == LocalLawKind::kPowerLaw && std::abs(g.gap) <= touch_roundoff_)
-      g.gap = 0;
   } else {
     g.gap = kFarGap;
   }
@@ -351,6 +344,23 @@ double IndentationProblem::gap_value(int i, const cont::Vector& z, const std::ve
                                      double depth) const {
   if (!weighted_) return gap(i, s, depth, false).gap;
   return weighted_->g0[i] - depth + weighted_->C.row(i).dot(z.head(chart_.size()));
+}
+
+// The first-touch node's gap at the start is zero only to the travel's roundoff (s(p) is a
+// Newton solve, and the linearised gap recomputes its reference point), and a power law's start
+// is regular only at the Fischer-Burmeister kink (0, 0), where d_b > 0 puts the dent's rate into
+// the alpha column (local-indentation.md 3); on the lambda side (gap +1.8e-15 mm, measured on a
+// linear cap) d_b = 0 and the Jacobian is singular. So with a power law, a gap within roundoff
+// of zero takes the derivatives of the touch, phi(lambda, 0): the generalised Jacobian's element
+// at the kink a roundoff away. The value, and so the solution, is that of the computed gap.
+NcpValue IndentationProblem::complementarity(double lambda, double gap) const {
+  NcpValue phi = ncp(options_.ncp, lambda, kappa_ * gap);
+  if (options_.local.kind == LocalLawKind::kPowerLaw && std::abs(gap) <= touch_roundoff_) {
+    const NcpValue touch = ncp(options_.ncp, lambda, 0.0);
+    phi.d_a = touch.d_a;
+    phi.d_b = touch.d_b;
+  }
+  return phi;
 }
 
 double IndentationProblem::contact_gap(int i, const cont::Vector& z,
@@ -404,7 +414,7 @@ bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector&
     const int c = static_cast<int>(i);
     const double lambda = z[nf + c];
     const double depth = face_depth(candidates_[i], z, h);
-    F[nf + c] = ncp(options_.ncp, lambda, kappa_ * contact_gap(c, z, *states, depth, lambda)).value;
+    F[nf + c] = complementarity(lambda, contact_gap(c, z, *states, depth, lambda)).value;
   }
   const UnknownLayout u = layout();
   if (u.local) {
@@ -455,8 +465,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
     const int k = static_cast<int>(i);
     const double lambda = z[nf + k];
     const DentValue dent_k = dent(candidates_[i], z);
-    const NcpValue phi =
-        ncp(options_.ncp, lambda, kappa_ * contact_gap(k, z, *states, h - dent_k.u, lambda));
+    const NcpValue phi = complementarity(lambda, contact_gap(k, z, *states, h - dent_k.u, lambda));
     for (int e = weighted_->C.outerIndexPtr()[k]; e < weighted_->C.outerIndexPtr()[k + 1]; ++e) {
       J[weighted_->column[e]] -= weighted_->C.valuePtr()[e];
       J[weighted_->row[e]] += phi.d_b * kappa_ * weighted_->C.valuePtr()[e];
@@ -468,7 +477,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
     const double lambda = z[nf + ci];
     const DentValue dent_i = dent(candidates_[i], z);
     const NodeGap g = gap(ci, *states, h - dent_i.u, nonlinear && lambda != 0.0);
-    const NcpValue phi = ncp(options_.ncp, lambda, kappa_ * (g.gap + layer_approach(ci, lambda)));
+    const NcpValue phi = complementarity(lambda, g.gap + layer_approach(ci, lambda));
     const CandidateSlots& s = slots_[i];
     if (krylov_) {
       rows[i].eq = s.eq;
@@ -519,7 +528,7 @@ bool IndentationProblem::residual_p(const cont::Vector& z, double h, cont::Vecto
     const double lambda = z[nf + c];
     const double depth = face_depth(candidates_[i], z, h);
     if (!weighted_ && !gap(c, s, depth, false).hits) continue;
-    const NcpValue phi = ncp(options_.ncp, lambda, kappa_ * contact_gap(c, z, s, depth, lambda));
+    const NcpValue phi = complementarity(lambda, contact_gap(c, z, s, depth, lambda));
     out[nf + c] = -phi.d_b * kappa_;
   }
   return true;

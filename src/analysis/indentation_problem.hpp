@@ -217,6 +217,8 @@ class IndentationProblem : public cont::Problem {
                    double depth) const;
   double contact_gap(int i, const cont::Vector& z, const std::vector<NodeState>& s, double depth,
                      double lambda) const;
+  // phi(lambda, kappa gap) with the touch's derivatives for a gap within roundoff (power law).
+  NcpValue complementarity(double lambda, double gap) const;
   double multiplier_diagonal(int i, const NcpValue& phi) const;
   void add_multiplier_terms(int i, const NcpValue& phi, double dent_rate, double* J) const;
   void build_weighted_gaps();
@@ -243,7 +245,7 @@ class IndentationProblem : public cont::Problem {
   std::vector<NodeState> linear_states_;  // linear kinematics: node states at the last x
   Eigen::VectorXd reaction_row_;          // linear kinematics: support reaction along e = r_e . x
   double t0_ = 0;                         // first touch travel
-  double touch_roundoff_ = 0;             // mm: |gap| below it is a touch (power law only)
+  double touch_roundoff_ = 0;             // mm: a gap below it is a touch (complementarity())
   double kappa_ = 1;                      // N/mm
   std::vector<int> candidates_;
   std::vector<NodeContactGeometry> geometry_;    // per mesh node

@@ -250,7 +250,7 @@ TEST(IndentationProblem, HertzDent_IndenterOffTheNodes_RegularStartAndSolve) {
 // The first-touch gap at the start is zero only to roundoff: on this linear quarter cap with
 // the case's default pose it came out +1.8e-15 mm, which put the apex row on the lambda side of
 // the Fischer-Burmeister kink (d_b = 0) and left the power law's alpha column empty: the start
-// could not be factored. Gaps within the travel's roundoff now count as touching.
+// could not be factored. A gap within the travel's roundoff now takes the touch's derivatives.
 TEST(IndentationProblem, HertzLocalLaw_LinearCap_StartIsRegularDespiteRoundoffInTheFirstGap) {
   CaseFile c = coarse_cap_case("linear", "[0/0]2S", "quarter", 1.5);
   c.contact.local = LocalContactModel::kHertz;

@@ -198,7 +198,9 @@ TEST(RunCommand, LocalLawAddsTheLocalIndentationColumnToTheTable) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     ASSERT_EQ(rows[i].size(), 8u);
     EXPECT_NEAR(rows[i][3], json["points"][i]["local_indent_mm"].get<double>(), 5e-6);
-    EXPECT_NEAR(rows[i][2] + rows[i][3], rows[i][0], 2e-5);  // w + alpha = h (printed digits)
+    const double depth = json["points"][i]["depth_mm"].get<double>();
+    EXPECT_NEAR(rows[i][0], depth, 5e-5);               // 4 decimals printed
+    EXPECT_NEAR(rows[i][2] + rows[i][3], depth, 1e-5);  // w + alpha = h (5 decimals printed)
   }
   EXPECT_GT(rows.back()[3], 0.0);
   // The dent profile's radius: hertz's relative radius of the sphere on the cap.

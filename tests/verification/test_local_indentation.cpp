@@ -15,7 +15,7 @@
 //     contact outside it, work = strain energy + local energy - D (the defect D derived there);
 //  6. input errors naming contact.local.
 // Every asserted comparison is also recorded for docs/verification.md (verification_record.hpp,
-// table local-indentation). Numbers quoted in comments were measured on 2026-11-23 (Release,
+// table local-indentation). Numbers quoted in comments were measured on 2026-11-24 (Release,
 // 2 vCPU).
 #include <gtest/gtest.h>
 
