@@ -308,6 +308,49 @@ TEST(LocalIndentationVerification,
   expect_plate_within_5_percent(0.25, "0.25 mm");
 }
 
+// 4b. The quarter model with the dent: the axis lies on both symmetry planes, the dent radii are
+// the same in every quadrant and the law sums the quarter's multipliers with the symmetry factor,
+// so the quarter plate reports the whole plate: 1 mm mesh at h = 0.3 mm (patch radius 0.89 mm,
+// the 1 mm ring in contact outside it), force, local approach, energy, contact area and apex
+// deflection equal to the full model's to the solver's tolerance (1e-8 relative).
+TEST(LocalIndentationVerification, HertzDent_QuarterPlateReportsTheWholePlate) {
+  const double depth = 0.3;
+  const auto run = [&](const std::string& symmetry) {
+    const CaseFile c = isotropic_indentation_case(
+        3.8, kPlateShell,
+        "{size_apex: 1 mm, size_edge: 4 mm, refine_radius: 10 mm, symmetry: " + symmetry + "}",
+        "linear", kSphere, "outer");
+    IndentationOptions o;
+    o.local = hertz_law(kSphere, plate_hertz_modulus());
+    IndentationFixture f(c, o);
+    cont::Vector z = f.problem->initial_point();
+    for (int i = 1; i <= 6; ++i) {
+      const cont::NewtonResult r =
+          cont::solve_at(*f.problem, z, depth * i / 6, tight_kinsol_settings(*f.problem));
+      EXPECT_TRUE(r.converged) << r.reason;
+    }
+    return f.problem->evaluate(z, depth);
+  };
+  const IndentationState full = run("full"), quarter = run("quarter");
+  std::cout << "plate with the dent at " << depth << " mm: force " << quarter.force << " / "
+            << full.force << " N, alpha " << quarter.local_indentation << " / "
+            << full.local_indentation << " mm, contact radius " << quarter.contact_radius << " / "
+            << full.contact_radius << " mm (patch " << std::sqrt(kSphere * full.local_indentation)
+            << " mm)\n";
+  const auto expect_same = [](double a, double b, const std::string& what) {
+    test::record_verification(kTable,
+                              "plate with the dent, h = 0.3 mm: quarter model vs full, " + what, b,
+                              a, 1e-8, "the full model (a different model of the same shell)");
+    EXPECT_NEAR(a, b, 1e-8 * std::abs(b)) << what;
+  };
+  expect_same(quarter.force, full.force, "force");
+  expect_same(quarter.local_indentation, full.local_indentation, "local approach");
+  expect_same(quarter.energy, full.energy, "strain energy");
+  expect_same(quarter.contact_area, full.contact_area, "contact area");
+  expect_same(quarter.apex_deflection, full.apex_deflection, "apex deflection");
+  EXPECT_GT(full.contact_radius, std::sqrt(kSphere * full.local_indentation));
+}
+
 // ---------------------------------------------------------------------------------------------
 // 5. Energy. The coupled system is stationary for U(x) + E_local(alpha), E_local = (2/5) k
 // alpha^2.5, only where every node in contact has d g_i / d alpha = 1, i.e. lies inside the
