@@ -49,7 +49,7 @@ FULL_FILTER = ":".join([
     "Mitc4Patch.*", "Mitc4Locking.*", "Mitc4Nonlinear.*",
     "LinearShellBenchmarks.*", "LaminateNavier.*", "InPlaneCantilever.*",
     "NonlinearShellBenchmarks.*", "ClampedPlateLinear.*", "PointLoads.*",
-    "ClampedPlateSphere.*", "ContactVerification.*",
+    "ClampedPlateSphere.*", "ContactVerification.*", "HertzDent.*", "LocalIndentation*",
     "ContPseudoArclength.*", "ContEvents.*", "SzeHingedRoof.*",
     "NistLinear.*", "*NistNonlinear.*",
 ])

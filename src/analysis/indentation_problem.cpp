@@ -97,7 +97,13 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
     }
   }
   SI_REQUIRE(!reachable.empty(), "indentation: no node within reach of the indenter");
-  t0_ = *std::min_element(travel.begin(), travel.end());
+  const auto first = std::min_element(travel.begin(), travel.end());
+  t0_ = *first;
+  double extent = 0;
+  for (const Vector3d& p : points) extent = std::max(extent, p.cwiseAbs().maxCoeff());
+  touch_roundoff_ = 1e-13 * (1 + std::abs(t0_) + extent);
+  if (options_.local.kind == LocalLawKind::kPowerLaw)
+    measure_dent_radii(points, reachable[first - travel.begin()]);
 
   tributary_area_.assign(nn, 0.0);
   neighbours_.assign(nn, {});
@@ -140,6 +146,31 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
 }
 
 IndentationProblem::~IndentationProblem() = default;
+
+// r_n of the dent profile: the distance of node n's reference contact point from the indenter's
+// axis, measured from the first-touch node's distance r_f as (r_n^2 - r_f^2)^0.5 (0 inside it).
+// With a node on the axis (the apex under the default pose) r_f = 0 up to roundoff, which this
+// removes; without one (an indenter off the nodes' lines) the first-touch node still counts as
+// the patch's centre. Either way the row closed at first touch has d g / d alpha = 1 at
+// alpha = 0, which keeps the start's Jacobian regular (local-indentation.md 3). For a sphere
+// over a flat face r_n^2 - r_f^2 = 2 R (s(P_n) - t0) to O(r^4/R^2): the shifted radius is the
+// one the rigid sphere's own gap profile sees. Reference configuration: Hertz's profile is a
+// small-strain field over the undeformed surface, and the face's lateral motion is of the order
+// of the half-space's own radial surface displacement, which Hertz's theory neglects.
+void IndentationProblem::measure_dent_radii(const std::vector<Vector3d>& points, int first) {
+  const Vector3d q = indenter_.reference_point();
+  const auto axis_distance = [&](const Vector3d& p) {
+    const Vector3d d = p - q;
+    return (d - d.dot(direction_) * direction_).norm();
+  };
+  const double rf = axis_distance(points[first]);
+  dent_radius_.resize(points.size());
+  for (std::size_t n = 0; n < points.size(); ++n) {
+    const double r = axis_distance(points[n]);
+    dent_radius_[n] = std::sqrt(std::max(r * r - rf * rf, 0.0));
+  }
+  dent_radius_[first] = 0;
+}
 
 void IndentationProblem::choose_candidates(const std::vector<int>& nodes) {
   candidates_ = nodes;
@@ -260,9 +291,14 @@ int IndentationProblem::size() const {
   return layout().size();
 }
 
-double IndentationProblem::face_depth(const cont::Vector& z, double h) const {
+DentValue IndentationProblem::dent(int node, const cont::Vector& z) const {
   const UnknownLayout u = layout();
-  return u.local ? h - z[u.alpha_index()] : h;
+  if (!u.local) return {};
+  return options_.local.dent(dent_radius_[node], z[u.alpha_index()]);
+}
+
+double IndentationProblem::face_depth(int node, const cont::Vector& z, double h) const {
+  return h - dent(node, z).u;
 }
 
 double IndentationProblem::layer_approach(int i, double lambda) const {
@@ -312,6 +348,23 @@ double IndentationProblem::gap_value(int i, const cont::Vector& z, const std::ve
   return weighted_->g0[i] - depth + weighted_->C.row(i).dot(z.head(chart_.size()));
 }
 
+// The first-touch node's gap at the start is zero only to the travel's roundoff (s(p) is a
+// Newton solve, and the linearised gap recomputes its reference point), and a power law's start
+// is regular only at the Fischer-Burmeister kink (0, 0), where d_b > 0 puts the dent's rate into
+// the alpha column (local-indentation.md 3); on the lambda side (gap +1.8e-15 mm, measured on a
+// linear cap) d_b = 0 and the Jacobian is singular. So with a power law, a gap within roundoff
+// of zero takes the derivatives of the touch, phi(lambda, 0): the generalised Jacobian's element
+// at the kink a roundoff away. The value, and so the solution, is that of the computed gap.
+NcpValue IndentationProblem::complementarity(double lambda, double gap) const {
+  NcpValue phi = ncp(options_.ncp, lambda, kappa_ * gap);
+  if (options_.local.kind == LocalLawKind::kPowerLaw && std::abs(gap) <= touch_roundoff_) {
+    const NcpValue touch = ncp(options_.ncp, lambda, 0.0);
+    phi.d_a = touch.d_a;
+    phi.d_b = touch.d_b;
+  }
+  return phi;
+}
+
 double IndentationProblem::contact_gap(int i, const cont::Vector& z,
                                        const std::vector<NodeState>& s, double depth,
                                        double lambda) const {
@@ -336,11 +389,10 @@ const std::vector<NodeState>& IndentationProblem::shell_terms(const cont::Vector
     r_free -= weighted_->C.transpose() * multipliers(z);
     return states;
   }
-  const double depth = face_depth(z, h);
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const double lambda = z[nf + static_cast<int>(i)];
     if (lambda == 0.0) continue;
-    const NodeGap g = gap(static_cast<int>(i), states, depth, false);
+    const NodeGap g = gap(static_cast<int>(i), states, face_depth(candidates_[i], z, h), false);
     for (int l = 0; l < 5; ++l)
       if (slots_[i].eq[l] >= 0) r_free[slots_[i].eq[l]] -= lambda * g.gradient[l];
   }
@@ -360,11 +412,11 @@ bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector&
   }
   F.resize(size());
   F.head(nf) = r;
-  const double depth = face_depth(z, h);
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const int c = static_cast<int>(i);
     const double lambda = z[nf + c];
-    F[nf + c] = ncp(options_.ncp, lambda, kappa_ * contact_gap(c, z, *states, depth, lambda)).value;
+    const double depth = face_depth(candidates_[i], z, h);
+    F[nf + c] = complementarity(lambda, contact_gap(c, z, *states, depth, lambda)).value;
   }
   const UnknownLayout u = layout();
   if (u.local) {
@@ -382,13 +434,14 @@ double IndentationProblem::multiplier_diagonal(int i, const NcpValue& phi) const
 
 // The Jacobian entries of candidate i's multiplier row and column that are the same for nodal
 // and weighted gaps: the diagonal and, with a power-law local contact, the alpha coupling
-// (d g / d alpha = 1 where the gap reaches the indenter; alpha's row sums the multipliers).
-void IndentationProblem::add_multiplier_terms(int i, const NcpValue& phi, bool hits,
+// (d g / d alpha = the dent's rate where the gap reaches the indenter, `dent_rate`, 0 beside
+// it; alpha's row sums the multipliers).
+void IndentationProblem::add_multiplier_terms(int i, const NcpValue& phi, double dent_rate,
                                               double* J) const {
   const CandidateSlots& s = slots_[i];
   J[s.diagonal] += multiplier_diagonal(i, phi);
   if (layout().local == 0) return;
-  if (hits) J[s.alpha_column] += phi.d_b * kappa_;
+  J[s.alpha_column] += phi.d_b * kappa_ * dent_rate;
   J[s.alpha_row] += model_.symmetry_factor;
 }
 
@@ -410,23 +463,23 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   for (int k = 0; k < K.nonZeros(); ++k) J[k_to_j_[k]] = K.valuePtr()[k];
   std::vector<ContactJacobianRow> rows(krylov_ ? candidates_.size() : 0);
   const UnknownLayout u = layout();
-  const double depth = face_depth(z, h);
   for (std::size_t i = 0; weighted_ && i < candidates_.size(); ++i) {
     const int k = static_cast<int>(i);
     const double lambda = z[nf + k];
-    const NcpValue phi =
-        ncp(options_.ncp, lambda, kappa_ * contact_gap(k, z, *states, depth, lambda));
+    const DentValue dent_k = dent(candidates_[i], z);
+    const NcpValue phi = complementarity(lambda, contact_gap(k, z, *states, h - dent_k.u, lambda));
     for (int e = weighted_->C.outerIndexPtr()[k]; e < weighted_->C.outerIndexPtr()[k + 1]; ++e) {
       J[weighted_->column[e]] -= weighted_->C.valuePtr()[e];
       J[weighted_->row[e]] += phi.d_b * kappa_ * weighted_->C.valuePtr()[e];
     }
-    add_multiplier_terms(k, phi, true, J);  // weighted gaps always reach the indenter
+    add_multiplier_terms(k, phi, dent_k.rate, J);  // weighted gaps always reach the indenter
   }
   for (std::size_t i = 0; !weighted_ && i < candidates_.size(); ++i) {
     const int ci = static_cast<int>(i);
     const double lambda = z[nf + ci];
-    const NodeGap g = gap(ci, *states, depth, nonlinear && lambda != 0.0);
-    const NcpValue phi = ncp(options_.ncp, lambda, kappa_ * (g.gap + layer_approach(ci, lambda)));
+    const DentValue dent_i = dent(candidates_[i], z);
+    const NodeGap g = gap(ci, *states, h - dent_i.u, nonlinear && lambda != 0.0);
+    const NcpValue phi = complementarity(lambda, g.gap + layer_approach(ci, lambda));
     const CandidateSlots& s = slots_[i];
     if (krylov_) {
       rows[i].eq = s.eq;
@@ -442,7 +495,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
         for (int c = 0; c < 5; ++c)
           if (s.eq[c] >= 0) J[s.block[5 * r + c]] -= lambda * g.gradient_derivative(r, c);
     }
-    add_multiplier_terms(ci, phi, g.hits, J);
+    add_multiplier_terms(ci, phi, g.hits ? dent_i.rate : 0.0, J);
   }
   if (u.local) J[alpha_diagonal_] -= options_.local.stiffness(z[u.alpha_index()]);
   // Linear kinematics: no chart, T = I (no blocks).
@@ -472,12 +525,12 @@ bool IndentationProblem::residual_p(const cont::Vector& z, double h, cont::Vecto
   const int nf = chart_.size();
   std::vector<NodeState> s = node_states(z);
   out = cont::Vector::Zero(size());
-  const double depth = face_depth(z, h);
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const int c = static_cast<int>(i);
     const double lambda = z[nf + c];
+    const double depth = face_depth(candidates_[i], z, h);
     if (!weighted_ && !gap(c, s, depth, false).hits) continue;
-    const NcpValue phi = ncp(options_.ncp, lambda, kappa_ * contact_gap(c, z, s, depth, lambda));
+    const NcpValue phi = complementarity(lambda, contact_gap(c, z, s, depth, lambda));
     out[nf + c] = -phi.d_b * kappa_;
   }
   return true;
@@ -523,10 +576,10 @@ std::vector<int> IndentationProblem::signature(const cont::Vector& z, double h) 
   const int nf = chart_.size();
   const std::vector<NodeState> s = node_states(z);
   std::vector<int> active(candidates_.size());
-  const double depth = face_depth(z, h);
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const int c = static_cast<int>(i);
     const double lambda = z[nf + c];
+    const double depth = face_depth(candidates_[i], z, h);
     active[i] = lambda > kappa_ * contact_gap(c, z, s, depth, lambda);
   }
   return active;
@@ -539,9 +592,9 @@ bool IndentationProblem::adapt(cont::Vector& z, double h) {
   // Every node not yet a candidate whose contact point is now within candidate_depth of the
   // indenter (measured as travel along its path): the set follows the deformed shell.
   std::set<int> added;
-  const double depth = face_depth(z, h);
   for (int n = 0; n < model_.mesh.num_nodes(); ++n) {
     if (is_candidate[n]) continue;
+    const double depth = face_depth(n, z, h);
     const Vector3d p = geometry_[n].X + s[n].u + geometry_[n].offset * s[n].d;
     const TravelGap g = travel_gap(indenter_, direction_, p, t0_ + depth, false);
     if (g.hits && g.travel - t0_ - depth <= options_.candidate_depth) added.insert(n);
@@ -717,11 +770,11 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   contact_curvatures(z, s, out);
   out.min_gap = std::numeric_limits<double>::infinity();
   out.min_multiplier = std::numeric_limits<double>::infinity();
-  const double depth = face_depth(z, h);
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const int n = candidates_[i];
     const double lambda = z[nf + static_cast<int>(i)];
     const int k = static_cast<int>(i);
+    const double depth = face_depth(n, z, h);
     const bool hits = weighted_ || gap(k, s, depth, false).hits;
     const double g = contact_gap(k, z, s, depth, lambda);  // to the flattened face
     out.nodes.push_back(n);

@@ -9,7 +9,7 @@
 // docs/theory/local-indentation.md), the local approach alpha (mm) of the indenter towards the
 // shell's contact face. Equations:
 //     r(x) - sum_i lambda_i G_i(x) = 0               equilibrium (free dofs)
-//     phi(lambda_i, kappa g_i(x, h - alpha)) = 0     complementarity, per candidate
+//     phi(lambda_i, kappa g_i(x, h - u_i(alpha))) = 0  complementarity, per candidate
 //     s sum_i lambda_i - k sgn(alpha) |alpha|^1.5 = 0  local law (power law only; s = symmetry
 //                                                       factor: the law holds for the whole shell)
 // with g_i the gap along the direction of travel (travel_gap.hpp), G_i its gradient in the
@@ -20,11 +20,15 @@
 //     [ phi_b kappa G^T        phi_a ]      K T + D of shell_chart.hpp on the shell columns.
 // Linear kinematics: K, G and the gap are those of the reference state (linearised gap,
 // node_gap.hpp), so the only nonlinearity is phi; this is the paper's linear setting.
-// Local law: the indenter's travel into the contact face is h - alpha, so alpha enters every gap
-// alike. The law is written as force in terms of alpha (not alpha = (F/k)^(2/3), whose
+// Local law: the contact face is dented by Hertz's profile u_i = u(r_i; alpha) of the law
+// (hertz_dent.hpp; alpha at the axis, r_i the node's distance from the indenter's axis in the
+// reference configuration), so the indenter's travel into node i's face is h - u_i: a flat punch
+// at depth h - alpha inside the patch r <= (R alpha)^0.5, the half-space's surface displacement
+// outside. The law is written as force in terms of alpha (not alpha = (F/k)^(2/3), whose
 // derivative is infinite at F = 0): its derivative 1.5 k alpha^0.5 is finite everywhere and zero
-// at the start, where the alpha column still has the gap rows' d_b kappa, so the Jacobian stays
-// regular (local-indentation.md 3). With the thin-layer law (vam) each gap gains
+// at the start, where the alpha column still has d_b kappa du/dalpha = d_b kappa in the row of
+// the first-touch node (its r is 0: inside the patch), so the Jacobian stays regular
+// (local-indentation.md 3). With the thin-layer law (vam) each gap gains
 // c_L lambda_i / A_i instead, A_i the node's tributary area: no extra unknown. The linear fast
 // path refuses the power law (nonlinear) and carries the thin layer.
 //
@@ -150,8 +154,9 @@ class IndentationProblem : public cont::Problem {
   Eigen::Ref<const cont::Vector> multipliers(const cont::Vector& z) const {
     return z.segment(chart_.size(), static_cast<Eigen::Index>(candidates_.size()));
   }
-  // The depth of the indenter into the contact face: h - alpha (h without a power-law local law).
-  double face_depth(const cont::Vector& z, double h) const;
+  // The depth of the indenter into the contact face at mesh node `node`: h - u(r_node; alpha)
+  // with a power-law local law (h - alpha inside the patch), h otherwise.
+  double face_depth(int node, const cont::Vector& z, double h) const;
   bool residual(const cont::Vector& z, double h, cont::Vector& F) override;
   bool factorize(const cont::Vector& z, double h) override;
   bool solve(cont::Vector& b) override;
@@ -212,6 +217,9 @@ class IndentationProblem : public cont::Problem {
   struct CandidateSlots;
   struct WeightedGaps;
   void choose_candidates(const std::vector<int>& nodes);
+  void measure_dent_radii(const std::vector<Vector3d>& points, int first);
+  // The local law's dent at mesh node `node` and its rate d/dalpha (zero without a power law).
+  DentValue dent(int node, const cont::Vector& z) const;
   void build_pattern();
   NodeGap gap(int i, const std::vector<NodeState>& s, double h, bool derivative) const;
   // Candidate i's gap value (mm) at the face depth (h - alpha): the node's gap, or its weighted
@@ -220,8 +228,10 @@ class IndentationProblem : public cont::Problem {
                    double depth) const;
   double contact_gap(int i, const cont::Vector& z, const std::vector<NodeState>& s, double depth,
                      double lambda) const;
+  // phi(lambda, kappa gap) with the touch's derivatives for a gap within roundoff (power law).
+  NcpValue complementarity(double lambda, double gap) const;
   double multiplier_diagonal(int i, const NcpValue& phi) const;
-  void add_multiplier_terms(int i, const NcpValue& phi, bool hits, double* J) const;
+  void add_multiplier_terms(int i, const NcpValue& phi, double dent_rate, double* J) const;
   void build_weighted_gaps();
   // Thin-layer local law: the approach at candidate i for its multiplier, c_L lambda_i / A_i.
   double layer_approach(int i, double lambda) const;
@@ -246,10 +256,12 @@ class IndentationProblem : public cont::Problem {
   std::vector<NodeState> linear_states_;  // linear kinematics: node states at the last x
   Eigen::VectorXd reaction_row_;          // linear kinematics: support reaction along e = r_e . x
   double t0_ = 0;                         // first touch travel
+  double touch_roundoff_ = 0;             // mm: a gap below it is a touch (complementarity())
   double kappa_ = 1;                      // N/mm
   std::vector<int> candidates_;
   std::vector<NodeContactGeometry> geometry_;    // per mesh node
   std::vector<double> tributary_area_;           // per mesh node, mm^2
+  std::vector<double> dent_radius_;              // per mesh node: r of the dent profile, mm
   mutable std::vector<double> touch_guess_;      // per candidate: last s(p), a Newton guess
   std::vector<std::vector<int>> neighbours_;     // per mesh node
   std::vector<std::vector<int>> node_elements_;  // per mesh node: the elements containing it

@@ -42,7 +42,7 @@ LocalContactLaw local_contact_law(const CaseFile& c) {
     const double compliance = analyze_vam(c.laminate).c_L(0, 0);
     if (!(compliance > 0))
       throw_input("the section's face compliance c_L++ is not positive", where);
-    return {LocalLawKind::kThinLayer, 0.0, compliance};
+    return {LocalLawKind::kThinLayer, 0.0, compliance, 0.0};
   }
   if (c.indenter.shape != IndenterShape::kSphere)
     throw_input("a Hertz-type local law needs a spherical indenter", where);

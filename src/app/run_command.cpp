@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "analysis/indentation_run.hpp"
+#include "analysis/local_contact.hpp"
 #include "analysis/result_fields.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -63,11 +64,20 @@ std::string pvd_text(const std::vector<std::pair<double, std::string>>& files) {
   return os.str();
 }
 
-std::string table_row(const PathPoint& p) {
-  char line[200];
+// The force-depth table on stdout; with a local contact law (contact.local) the local
+// indentation (path.csv's local_indent_mm) follows the apex deflection, the two parts of the
+// travel.
+std::string table_header(bool local) {
+  return std::string("depth_mm      force_N  apex_w_mm") + (local ? "  local_mm" : "") +
+         " radius_mm   energy_Nmm     work_Nmm iters";
+}
+
+std::string table_row(const PathPoint& p, bool local) {
+  char line[200], part[32] = "";
   const IndentationState& s = p.state;
-  std::snprintf(line, sizeof line, "%8.4f %12.6g %10.5f %9.4f %12.6g %12.6g %5d", s.depth, s.force,
-                s.apex_deflection, s.contact_radius, s.energy, p.work, p.iterations);
+  if (local) std::snprintf(part, sizeof part, " %9.5f", s.local_indentation);
+  std::snprintf(line, sizeof line, "%8.4f %12.6g %10.5f%s %9.4f %12.6g %12.6g %5d", s.depth,
+                s.force, s.apex_deflection, part, s.contact_radius, s.energy, p.work, p.iterations);
   return line;
 }
 
@@ -160,10 +170,12 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   const PathResult r = run_indentation_path(setup, on_point, control);
   progress.done();
 
+  const bool local = setup.problem->local_law().kind != LocalLawKind::kNone;
   out << "Indentation of " << cf.file << " (" << r.method
-      << "; whole-shell values, depth = indenter travel after first touch)\n"
-      << "depth_mm      force_N  apex_w_mm radius_mm   energy_Nmm     work_Nmm iters\n";
-  for (const PathPoint& p : r.points) out << table_row(p) << "\n";
+      << "; whole-shell values, depth = indenter travel after first touch"
+      << (local ? std::string(", local law ") + local_contact_name(cf.contact.local) : "") << ")\n"
+      << table_header(local) << "\n";
+  for (const PathPoint& p : r.points) out << table_row(p, local) << "\n";
   for (const cont::Event& e : r.events)
     if (e.type != cont::EventType::kSignatureChange)
       out << "event: " << e.name << (e.monitor.empty() ? "" : " of " + e.monitor)

@@ -22,6 +22,11 @@ double LocalContactLaw::approach(double force) const {
   return std::copysign(std::pow(std::abs(force) / k, 2.0 / 3.0), force);
 }
 
+DentValue LocalContactLaw::dent(double r, double alpha) const {
+  if (radius > 0) return hertz_dent(r, alpha, radius);
+  return {alpha, 1.0};
+}
+
 namespace {
 
 // The indenter's compliance term (1 - nu^2)/E; zero for a rigid indenter (E = 0).
@@ -38,7 +43,8 @@ double hertz_modulus(double indenter_E, double indenter_nu, double shell_E, doub
 
 LocalContactLaw hertz_law(double sphere_radius, double modulus) {
   SI_REQUIRE(sphere_radius > 0 && modulus > 0, "hertz_law: radius and modulus must be positive");
-  return {LocalLawKind::kPowerLaw, 4.0 / 3.0 * modulus * std::sqrt(sphere_radius), 0.0};
+  return {LocalLawKind::kPowerLaw, 4.0 / 3.0 * modulus * std::sqrt(sphere_radius), 0.0,
+          sphere_radius};
 }
 
 LocalContactLaw yang_sun_law(double sphere_radius, double indenter_E, double indenter_nu,
@@ -47,7 +53,7 @@ LocalContactLaw yang_sun_law(double sphere_radius, double indenter_E, double ind
              "yang_sun_law: radius and transverse modulus must be positive");
   const double k = 4.0 / 3.0 * std::sqrt(sphere_radius) /
                    (indenter_compliance(indenter_E, indenter_nu) + 1 / transverse_E);
-  return {LocalLawKind::kPowerLaw, k, 0.0};
+  return {LocalLawKind::kPowerLaw, k, 0.0, sphere_radius};
 }
 
 }  // namespace si

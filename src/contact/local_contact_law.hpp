@@ -4,11 +4,15 @@
 // the shell's contact face that the face's own flattening allows:
 //  * kPowerLaw: one approach for the whole contact, F = k alpha^1.5 with F the total contact
 //    force (whole shell). Hertz (point-loads.md 4.3): k = (4/3) E* R^0.5; Yang & Sun 1982
-//    (point-loads.md 4.4): k = (4/3) R^0.5 / [(1 - nu_i^2)/E_i + 1/E_2].
+//    (point-loads.md 4.4): k = (4/3) R^0.5 / [(1 - nu_i^2)/E_i + 1/E_2]. Both are Hertz's law
+//    in form, so the approach has Hertz's dent profile around the contact axis (hertz_dent.hpp)
+//    with the law's radius R: what the face loses at distance r from the axis, dent(r, alpha).
 //  * kThinLayer: a per-node approach c p_i, p_i the node's contact pressure and c the section's
 //    face compliance c_L++ (vam.md 7.3-7.4): linear, local to each node.
 // Units: mm, N, MPa.
 #pragma once
+
+#include "contact/hertz_dent.hpp"
 
 namespace si {
 
@@ -18,6 +22,9 @@ struct LocalContactLaw {
   LocalLawKind kind = LocalLawKind::kNone;
   double k = 0;           // kPowerLaw: N/mm^1.5
   double compliance = 0;  // kThinLayer: mm/MPa
+  // kPowerLaw: the radius R of the law's Hertz form k = (4/3) E R^0.5 (mm), the relative radius
+  // of the dent profile; 0: no profile, the whole face approaches the indenter by alpha.
+  double radius = 0;
 
   // kPowerLaw. F(alpha) = k sgn(alpha) |alpha|^1.5: the odd extension keeps Newton iterates with
   // alpha < 0 defined (a solution has alpha >= 0 since F >= 0). F is C^1 with F'(0) = 0.
@@ -25,15 +32,19 @@ struct LocalContactLaw {
   double stiffness(double alpha) const;  // dF/dalpha = 1.5 k |alpha|^0.5, N/mm
   double energy(double alpha) const;     // integral of F dalpha = (2/5) k |alpha|^2.5, N mm
   double approach(double force) const;   // inverse: (F/k)^(2/3), mm
+  // kPowerLaw: the face's local displacement towards the shell at distance r (mm) from the
+  // contact axis and its rate d/dalpha: hertz_dent(r, alpha, radius), or alpha and 1 without a
+  // radius (a rigid approach of the whole face).
+  DentValue dent(double r, double alpha) const;
 };
 
 // Rigid indenter: pass indenter_E = 0 (its compliance term is then zero).
 // E* of Hertz: 1/E* = (1 - nu_i^2)/E_i + (1 - nu_s^2)/E_s (point-loads.md 4.3).
 double hertz_modulus(double indenter_E, double indenter_nu, double shell_E, double shell_nu);
-// Hertz's F = (4/3) E* R^0.5 alpha^1.5 (sphere of radius R on a half-space).
+// Hertz's F = (4/3) E* R^0.5 alpha^1.5 (sphere of radius R on a half-space); dent radius R.
 LocalContactLaw hertz_law(double sphere_radius, double modulus);
 // Yang & Sun (1982), point-loads.md 4.4: k = (4/3) R^0.5 / [(1 - nu_i^2)/E_i + 1/E_2], E_2 the
-// transverse modulus of the top ply.
+// transverse modulus of the top ply; dent radius R (the law's own Hertz form).
 LocalContactLaw yang_sun_law(double sphere_radius, double indenter_E, double indenter_nu,
                              double transverse_E);
 

@@ -24,6 +24,7 @@ class SuperquadricIndenter : public Indenter {
  public:
   SuperquadricIndenter(const SuperquadricShape& shape, const IndenterPose& pose);
   std::string name() const override { return "superquadric"; }
+  Vector3d reference_point() const override { return pose_.position; }
   // Paper eq 29 generalised: F(x) - 1.
   double implicit(const Vector3d& x, double travel) const override;
   double signed_distance(const Vector3d& x, double travel, Vector3d* normal,

@@ -156,7 +156,10 @@ namespace {
 nlohmann::json local_contact_json(const IndentationSetup& setup) {
   const LocalContactLaw& law = setup.problem->local_law();
   nlohmann::json j = {{"law", local_contact_name(setup.case_file.contact.local)}};
-  if (law.kind == LocalLawKind::kPowerLaw) j["k_N_per_mm1.5"] = law.k;
+  if (law.kind == LocalLawKind::kPowerLaw) {
+    j["k_N_per_mm1.5"] = law.k;
+    j["dent_radius_mm"] = law.radius;  // hertz_dent.hpp; 0: uniform approach
+  }
   if (law.kind == LocalLawKind::kThinLayer) j["c_L_mm_per_MPa"] = law.compliance;
   return j;
 }

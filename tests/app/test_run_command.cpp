@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_test_support.hpp"
 #include "io/path_results.hpp"
@@ -39,6 +40,7 @@ TEST(RunCommand, LinearPathWritesTableCsvJsonAndVtu) {
   const auto r = run_cli("run '" + c.string() + "' --out '" + (dir / "out").string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(contains(r.output, "linear fast path")) << r.output;
+  EXPECT_FALSE(contains(r.output, "local_mm")) << r.output;  // no local law: no local column
   const std::string csv = testing::read_file(dir / "out" / "path.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')), path_csv_header());
   EXPECT_EQ(csv.substr(0, 16), "depth_mm,force_N");
@@ -144,6 +146,66 @@ TEST(RunCommand, ResumeWithoutCheckpointIsRefused) {
   EXPECT_TRUE(contains(r.output, "--resume")) << r.output;
   EXPECT_TRUE(contains(r.output, "nothing to resume")) << r.output;
   EXPECT_FALSE(fs::exists(dir / "out" / "path.csv"));
+}
+
+}  // namespace
+}  // namespace si
+
+namespace si {
+namespace {
+
+// The rows of the stdout table after the header line `header` (blank-separated numbers).
+std::vector<std::vector<double>> table_rows(const std::string& output, const std::string& header) {
+  std::istringstream in(output);
+  std::string line;
+  std::vector<std::vector<double>> rows;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (line == header) {
+      inside = true;
+      continue;
+    }
+    if (!inside) continue;
+    std::istringstream fields(line);
+    std::vector<double> row;
+    double v = 0;
+    while (fields >> v) row.push_back(v);
+    if (row.empty() || !fields.eof()) break;  // the table ends at the first other line
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// With a local law the table carries the local indentation beside the apex deflection: the
+// values of path.csv's local_indent_mm (5 decimals printed), and the two parts add up to the
+// depth (the apex is in contact and inside the Hertzian patch: h = w + alpha).
+TEST(RunCommand, LocalLawAddsTheLocalIndentationColumnToTheTable) {
+  const fs::path dir = fresh_dir("run_local");
+  const fs::path c =
+      write_case(dir, cap_case("linear", "{shape: sphere, radius: 12.7 mm}",
+                               "{method: natural, depth_max: 0.2 mm, step: 0.1 mm}") +
+                          "contact: {local: hertz}\n");
+  const auto r = run_cli("run '" + c.string() + "' --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "local law hertz")) << r.output;
+  const std::vector<std::vector<double>> rows = table_rows(
+      r.output,
+      "depth_mm      force_N  apex_w_mm  local_mm radius_mm   energy_Nmm     work_Nmm iters");
+  const auto json = nlohmann::json::parse(testing::read_file(dir / "out" / "path.json"));
+  ASSERT_GE(rows.size(), 3u) << r.output;  // depths 0, ..., 0.2 (natural may add points)
+  ASSERT_EQ(rows.size(), json["points"].size()) << r.output;
+  EXPECT_NEAR(rows.back()[0], 0.2, 1e-12);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i].size(), 8u);
+    EXPECT_NEAR(rows[i][3], json["points"][i]["local_indent_mm"].get<double>(), 5e-6);
+    const double depth = json["points"][i]["depth_mm"].get<double>();
+    EXPECT_NEAR(rows[i][0], depth, 5e-5);               // 4 decimals printed
+    EXPECT_NEAR(rows[i][2] + rows[i][3], depth, 1e-5);  // w + alpha = h (5 decimals printed)
+  }
+  EXPECT_GT(rows.back()[3], 0.0);
+  // The dent profile's radius: hertz's relative radius of the sphere on the cap.
+  EXPECT_NEAR(json["local_contact"]["dent_radius_mm"].get<double>(), 1 / (1 / 12.7 + 1 / 80.9),
+              1e-9);
 }
 
 }  // namespace
