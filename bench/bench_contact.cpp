@@ -104,6 +104,7 @@ BENCHMARK(si::BM_NonlinearPath)
     ->Args({92, 143, 0, 20, 1})
     ->Args({92, 143, 2, 20, 1})
     ->Args({92, 143, 2, 100, 2})
+    ->Args({29, 46, 2, 20, 2})  // ~1e5 unknowns, 0-2 mm: time and Newton iterations per step
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 int main(int argc, char** argv) {
