@@ -22,6 +22,7 @@
 #include "fitting/builtin_models.hpp"
 #include "fitting/curve_model.hpp"
 #include "io/atomic_file.hpp"
+#include "io/csv_table.hpp"
 #include "io/output_directory.hpp"
 #include "io/study_file.hpp"
 
@@ -175,11 +176,26 @@ std::pair<double, double> first_inflection(const json& events, const std::string
   return {kNaN, kNaN};
 }
 
+// The case's path_grid.csv (pseudo-arclength runs: the force at the depth grid, interpolated on
+// the branch by cubic Hermite, io/path_results.hpp) as points {depth_mm, force_N}; empty when
+// the run wrote none (its points are then on the grid already).
+json grid_points(const fs::path& dir) {
+  json points = json::array();
+  const fs::path file = dir / "path_grid.csv";
+  if (!fs::exists(file)) return points;
+  const CsvTable grid = read_csv_table(file.string());
+  const std::vector<double> depth = grid.numeric_column("depth_mm");
+  const std::vector<double> force = grid.numeric_column("force_N");
+  for (std::size_t i = 0; i < depth.size(); ++i)
+    points.push_back({{"depth_mm", depth[i]}, {"force_N", force[i]}});
+  return points;
+}
+
 // T = C1 h^C2 by least squares in linear space over the study's depth range (fitting library),
-// on the case's depth grid dh, 2 dh, ... (the paper's 0.1 mm stepping, P9), the force read off
-// the path by linear interpolation where the points are adaptive. Why the grid: adaptive points
-// crowd where the step controller shrank the step (contact changes), which weights the fit
-// towards those depths; on the [0/0]2S cap C2 moved from 1.61 (grid) to 1.79 (points).
+// on the case's depth grid dh, 2 dh, ... (the paper's 0.1 mm stepping, P9): path_grid.csv's
+// values where the points are adaptive (grid_points), read off `points` otherwise. Why the grid:
+// adaptive points crowd where the step controller shrank the step (contact changes), which weights
+// the fit towards those depths; on the [0/0]2S cap C2 moved from 1.61 (grid) to 1.79 (points).
 void fit_contact_law(const json& points, const StudyFit& f, double dh, json& row) {
   std::vector<double> h, t;
   const double end = points.back()["depth_mm"];
@@ -239,7 +255,10 @@ json summarize(const StudyCase& c, const fs::path& dir, const StudyFile& study) 
     row[std::string("critical_") + k + "_depth_mm"] = depth;
     row[std::string("critical_") + k + "_force_N"] = force;
   }
-  if (study.has_fit) fit_contact_law(pts, study.fit, c.case_file.path.step, row);
+  if (study.has_fit) {
+    const json grid = grid_points(dir);
+    fit_contact_law(grid.empty() ? pts : grid, study.fit, c.case_file.path.step, row);
+  }
   return row;
 }
 

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cli_test_support.hpp"
 #include "io/csv_table.hpp"
 
@@ -53,6 +55,19 @@ TEST(SweepCommand, PaperLayupsQuickRunsAllEightCasesAndFitsTheContactLaw) {
   EXPECT_TRUE(fs::exists(dir / "sweep.json"));
   EXPECT_TRUE(fs::exists(dir / "cases" / "002_15_-15_2S" / "path.csv"));
   EXPECT_TRUE(contains(r.output, "8/8")) << r.output;
+
+  // The sweep fits the force on the depth grid, read from path_grid.csv (the Hermite-interpolated
+  // table of the adaptive path): the same C1, C2 as `shellindent fit` on that file.
+  const fs::path c2 = dir / "cases" / "002_15_-15_2S";
+  const fs::path fit_json = dir / "grid_fit.json";
+  const auto f =
+      run_cli("fit '" + (c2 / "path_grid.csv").string() +
+              "' --model power --x depth_mm --y force_N --json '" + fit_json.string() + "'");
+  ASSERT_EQ(f.exit_code, 0) << f.output;
+  const nlohmann::json fit = nlohmann::json::parse(read_file(fit_json));
+  const std::vector<double> C1 = t.numeric_column("C1"), C2 = t.numeric_column("C2");
+  EXPECT_NEAR(C1[1], fit["parameters"][0]["value"].get<double>(), 1e-6 * C1[1]);
+  EXPECT_NEAR(C2[1], fit["parameters"][1]["value"].get<double>(), 1e-6 * C2[1]);
 }
 
 TEST(SweepCommand, RerunSkipsFinishedCasesAndMatchesASequentialRun) {
