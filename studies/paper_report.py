@@ -121,8 +121,8 @@ def header(args, runs, timing, depth_max):
         "builds; the 'measured' column gives the 1-minute load average when each sweep ended "
         f"(at the end of this script: {load}), so the wall times are upper bounds. The CPU time "
         "(of the cases, user + system) is less sensitive to the load; it is '-' for results "
-        "computed before this script recorded it. On an idle machine the default sweep took "
-        "83 s user + 12 s system CPU (docs/sweeps.md), i.e. about 50 s wall with `-j 2`.",
+        "computed before this script recorded it (docs/sweeps.md and docs/performance.md "
+        "have the measured history).",
         "",
     ]
     return lines
