@@ -19,6 +19,13 @@ double Indenter::min_distance(const std::vector<Vector3d>& points, double travel
 // overshoot: the step is then bracketed and bisected. A start inside is bracketed backwards.
 double Indenter::first_touch(const std::vector<Vector3d>& points) const {
   if (points.empty()) throw_input("first touch of an empty point set");
+  const std::optional<double> t = try_first_touch(points);
+  if (!t) throw_input("the indenter never touches the points along its direction");
+  return *t;
+}
+
+std::optional<double> Indenter::try_first_touch(const std::vector<Vector3d>& points) const {
+  if (points.empty()) return std::nullopt;
   double scale = 1.0;
   for (const Vector3d& x : points) scale = std::max(scale, x.cwiseAbs().maxCoeff());
   const double tol = 1e-12 * scale;
@@ -29,7 +36,7 @@ double Indenter::first_touch(const std::vector<Vector3d>& points) const {
   for (double step = std::max(-m, tol); m < 0.0; step *= 2.0) {  // bracket a start inside
     t -= step;
     m = min_distance(points, t);
-    if (step > 1e6 * scale) throw_input("the indenter never leaves the points");
+    if (step > 1e6 * scale) return std::nullopt;  // it never leaves them
   }
   for (int iter = 0; iter < max_iter && m > tol; ++iter) {
     const double t_next = t + m;
@@ -49,7 +56,7 @@ double Indenter::first_touch(const std::vector<Vector3d>& points) const {
     t = t_next;
     m = m_next;
   }
-  if (m > tol) throw_input("the indenter never touches the points along its direction");
+  if (m > tol) return std::nullopt;
   return t;
 }
 

@@ -3,6 +3,7 @@
 // docs/theory/indenters.md; the paper's eqs 29-32 (super-quadric surface, contact test, normal).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ class Indenter {
   // distance >= 0. Negative when the indenter starts inside the points' convex region.
   // Throws an input Error when the points are empty or never touched.
   double first_touch(const std::vector<Vector3d>& points) const;
+  // The same without the error: no value when the points are empty or never touched (the
+  // candidate searches ask it of every node beside the indenter's path, at every point).
+  std::optional<double> try_first_touch(const std::vector<Vector3d>& points) const;
 
   // Smallest signed distance of `points` at `travel`.
   double min_distance(const std::vector<Vector3d>& points, double travel) const;

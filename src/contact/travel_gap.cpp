@@ -1,8 +1,7 @@
 #include "contact/travel_gap.hpp"
 
 #include <cmath>
-
-#include "core/error.hpp"
+#include <optional>
 
 namespace si {
 namespace {
@@ -29,11 +28,9 @@ TravelGap travel_gap(const Indenter& indenter, const Vector3d& direction, const 
   TravelGap g;
   double t = guess;
   if (!newton_travel(indenter, direction, p, t)) {
-    try {
-      t = indenter.first_touch({p});
-    } catch (const Error&) {
-      return g;  // the indenter never reaches p along its path
-    }
+    const std::optional<double> touch = indenter.try_first_touch({p});
+    if (!touch) return g;  // the indenter never reaches p along its path
+    t = *touch;
     if (!newton_travel(indenter, direction, p, t)) return g;
   }
   Vector3d n;
