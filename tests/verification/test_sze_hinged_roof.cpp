@@ -30,15 +30,15 @@
 #include "nonlinear_benchmark_support.hpp"
 #include "shell/shell_element.hpp"
 #include "shell/shell_law.hpp"
+#include "sze_roof_support.hpp"
 
 namespace si {
 namespace {
 
-// Sze et al. 2004 sec. 3.8: R = 2540, axial length 508, half-angle 0.1 rad, E = 3102.75,
-// nu = 0.3, straight edges hinged, curved edges free, central point load P, Pmax = 3000.
-constexpr double kRadius = 2540, kLength = 508, kHalfAngleRad = 0.1;
-constexpr double kE = 3102.75, kNu = 0.3, kPmax = 3000;
-constexpr double kPi = 3.14159265358979323846;
+using verification::kRoofPmax;
+using verification::make_sze_roof;
+using verification::sze_roof_settings;
+constexpr double kPmax = kRoofPmax;
 
 // One tabulated point: P/Pmax and the downward centre deflection -W_C (mm).
 struct PathPoint {
@@ -158,54 +158,22 @@ std::vector<PathPoint> branch_path(const cont::Branch& branch) {
   return path;
 }
 
-// The straight edge hinged, the curved edge free, symmetry at the crown (x = 0) and at the axial
-// mid-plane (y = 0).
-std::vector<Support> quarter_roof_supports() {
-  return {{SupportKind::kHinged, "straight_edges", -1, {}},
-          {SupportKind::kSymmetryPlane, "crown", 0, {}},
-          {SupportKind::kSymmetryPlane, "axial_midplane", 1, {}}};
-}
-
 struct RoofRun {
   cont::Branch branch;
   std::vector<PathPoint> path;
   double seconds = 0;
 };
 
-// The quarter roof (theta >= 0, y >= 0; isotropic, so symmetric about the crown and the axial
-// mid-plane) with n x n mitc4 elements, P/4 at the centre, traced from lambda = P/Pmax = 0 up to
-// lambda = 1.1 (the tables end at 1.08 and 1.03) by pseudo-arclength continuation.
+// The quarter roof with n x n mitc4 elements, traced from lambda = P/Pmax = 0 up to 1.1 by
+// pseudo-arclength continuation (sze_roof_support.hpp).
 RoofRun trace_roof(double thickness, int n, bool snap_back) {
-  const Mesh mesh = cylindrical_panel_mesh(kRadius, kLength, kHalfAngleRad * 180 / kPi, n, n,
-                                           PanelPart::kQuarter);
-  const std::vector<Support> supports = quarter_roof_supports();
-  Loads loads;
-  loads.points.push_back({"center", Vector3d(0, 0, -kPmax / 4), false});
-  const auto element = make_shell_element("mitc4");
-  LoadProblemOptions options;
-  options.displacements = {{"minus_w_center", "center", -Vector3d::UnitZ()}};
-  options.threads = 1;  // ctest runs tests side by side; OpenMP spin-waiting is slow under load
-  LoadProblem problem(mesh, supports, *element, isotropic_shell_law(kE, kNu, thickness), loads,
-                      options);
-
-  cont::Settings settings;
-  // Arclength = RMS nodal displacement increment (mm, LoadProblem::inner) and 10 mm per unit
-  // load factor: the centre deflects 10-40 mm over the load range.
-  settings.parameter_weight = 10;
-  settings.step_initial = 0.2;
-  settings.step_max = 0.25;         // about 100 points per path, for the linear interpolation
-  settings.event_tolerance = 1e-6;  // arclength; the limit load is second order in it
-  settings.p_max = 1.1;
-  settings.max_steps = 300;
-  // ||F||_inf <= 1e-8 of the quarter load Pmax/4: the residual's round-off floor is about
-  // 6e-8 N (measured: KINSOL's line search stalls there), 1e-10 of it.
-  settings.newton.residual_scale = kPmax / 4;
-  settings.newton.relative_tolerance = 1e-8;
-  if (snap_back) settings.extremum_monitors = {"minus_w_center"};
-
+  // One assembly thread: ctest runs tests side by side; OpenMP spin-waiting is slow under load.
+  const verification::SzeRoof roof = make_sze_roof(thickness, n);
+  LoadProblem problem(roof.mesh, roof.supports, *roof.element, roof.law, roof.loads, roof.options);
   RoofRun run;
   const auto start = std::chrono::steady_clock::now();
-  run.branch = cont::pseudo_arclength(problem, problem.initial_point(), 0.0, settings);
+  run.branch =
+      cont::pseudo_arclength(problem, problem.initial_point(), 0.0, sze_roof_settings(snap_back));
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.path = branch_path(run.branch);
   return run;
@@ -299,15 +267,9 @@ TEST(SzeHingedRoof, SzeLiuLo2004_Sec38d_IsotropicH6p35_FirstLimitLoadAndSnapBack
 // solve y = J^-1 b at a deformed, unbalanced state, the central difference of F along y returns b
 // to truncation and round-off; and residual_p is -f_ext.
 TEST(SzeHingedRoof, LoadProblemJacobianMatchesCentralDifference) {
-  const Mesh mesh = cylindrical_panel_mesh(kRadius, kLength, kHalfAngleRad * 180 / kPi, 4, 4,
-                                           PanelPart::kQuarter);
-  const std::vector<Support> supports = quarter_roof_supports();
-  Loads loads;
-  loads.points.push_back({"center", Vector3d(0, 0, -kPmax / 4), false});
-  const auto element = make_shell_element("mitc4");
-  LoadProblemOptions options;
-  options.threads = 1;
-  LoadProblem problem(mesh, supports, *element, isotropic_shell_law(kE, kNu, 6.35), loads, options);
+  const verification::SzeRoof roof = make_sze_roof(6.35, 4);
+  const Mesh& mesh = roof.mesh;
+  LoadProblem problem(roof.mesh, roof.supports, *roof.element, roof.law, roof.loads, roof.options);
   // A state with rotations of about 0.2 rad and displacements of about 10 mm.
   cont::Vector x(problem.size());
   for (int i = 0; i < x.size(); ++i) x[i] = 0.1 * std::sin(1.0 + 0.7 * i) + 0.1 * std::cos(0.3 * i);
