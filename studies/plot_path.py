@@ -4,8 +4,11 @@
 k11 and k22 (the paper's Figs 7 and 10), with the located events marked.
 
 Usage: plot_path.py RESULTS_DIR [out.png]
-Reads RESULTS_DIR/path.csv and RESULTS_DIR/events.json (docs/results.md); writes out.png
-(default RESULTS_DIR/force_depth.png). Needs python3-matplotlib (Debian).
+Reads RESULTS_DIR/path.csv and RESULTS_DIR/events.json (docs/results.md), and path_grid.csv
+where the run wrote one (pseudo-arclength: the curves are drawn through its 0.1 mm grid,
+interpolated on the branch by cubic Hermite, with the converged points as markers, unless a
+snap-back makes the depth turn back); writes
+out.png (default RESULTS_DIR/force_depth.png). Needs python3-matplotlib (Debian).
 """
 import csv
 import json
@@ -22,15 +25,26 @@ def column(rows, name):
     return [float(r[name]) for r in rows]
 
 
+def read_rows(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
 def main(directory, png_path):
-    with open(os.path.join(directory, "path.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
+    rows = read_rows(os.path.join(directory, "path.csv"))
+    grid_path = os.path.join(directory, "path_grid.csv")
+    # The grid reports a depth once: where a snap-back makes the path pass depths again, the
+    # curve is drawn through the points themselves.
+    monotone = all(b >= a for a, b in zip(column(rows, "depth_mm"), column(rows, "depth_mm")[1:]))
+    curve = read_rows(grid_path) if monotone and os.path.exists(grid_path) else rows
     events_path = os.path.join(directory, "events.json")
     events = json.load(open(events_path)) if os.path.exists(events_path) else []
     depth = column(rows, "depth_mm")
     force = [F / 1000 for F in column(rows, "force_N")]
+    curve_force = [F / 1000 for F in column(curve, "force_N")]
     fig, ax = plt.subplots(1, 3, figsize=(14, 4.2))
-    ax[0].plot(depth, force, "o-", ms=3, label="contact force $T_N$")
+    line = ax[0].plot(column(curve, "depth_mm"), curve_force, "-", label="contact force $T_N$")
+    ax[0].plot(depth, force, "o", ms=3, color=line[0].get_color(), label="converged points")
     for e in events:
         if e["type"] in ("monitor_max", "limit_point"):
             ax[0].plot(e["depth_mm"], e["force_N"] / 1000, "rv", ms=9, label=e["type"])
@@ -43,7 +57,7 @@ def main(directory, png_path):
     ax[1].set_ylabel("contact radius (mm)")
     ax[1].grid(True, alpha=0.3)
     for key, label in (("k11_per_mm", "$\\kappa_{11}$"), ("k22_per_mm", "$\\kappa_{22}$")):
-        ax[2].plot(column(rows, key), force, "-", label=label)
+        ax[2].plot(column(curve, key), curve_force, "-", label=label)
     for e in events:
         if e["type"] == "inflection":
             ax[2].plot(e[e["against"]], e["force_N"] / 1000, "kx", ms=9)
