@@ -146,5 +146,3 @@ BENCHMARK(BM_AssemblyPlusFactorize)->Apply(sizes)->Unit(benchmark::kMillisecond)
 
 }  // namespace
 }  // namespace si
-
-BENCHMARK_MAIN();

@@ -11,7 +11,6 @@
 #include <string>
 
 #include "analysis/shell_model.hpp"
-#include "core/blas_threads.hpp"
 #include "io/case_file.hpp"
 #include "model/assembler.hpp"
 #include "model/linear_solver.hpp"
@@ -92,10 +91,3 @@ BENCHMARK(BM_CapAssemblyPlusFactorize)
 
 }  // namespace
 }  // namespace si
-
-int main(int argc, char** argv) {
-  si::limit_blas_threads();  // as the CLI does (core/blas_threads.hpp)
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  return 0;
-}

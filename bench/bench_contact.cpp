@@ -15,7 +15,6 @@
 #include <string>
 
 #include "analysis/indentation_run.hpp"
-#include "core/blas_threads.hpp"
 #include "io/case_file.hpp"
 
 namespace si {
@@ -107,9 +106,3 @@ BENCHMARK(si::BM_NonlinearPath)
     ->Args({29, 46, 2, 20, 2})  // ~1e5 unknowns, 0-2 mm: time and Newton iterations per step
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
-int main(int argc, char** argv) {
-  si::limit_blas_threads();  // as the CLI does (core/blas_threads.hpp)
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  return 0;
-}

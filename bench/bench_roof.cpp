@@ -9,7 +9,6 @@
 #include <benchmark/benchmark.h>
 
 #include "continuation/pseudo_arclength.hpp"
-#include "core/blas_threads.hpp"
 #include "sze_roof_support.hpp"
 
 namespace si {
@@ -85,10 +84,3 @@ BENCHMARK(si::BM_SzeRoofPath)
     ->Args({635, 24, 1})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
-
-int main(int argc, char** argv) {
-  si::limit_blas_threads();  // as the CLI does (core/blas_threads.hpp)
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  return 0;
-}

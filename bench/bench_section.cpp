@@ -36,5 +36,3 @@ void BM_Clt_45_2S(benchmark::State& state) {
 BENCHMARK(BM_Clt_45_2S)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();

@@ -17,18 +17,23 @@ CaseFile path_case(PathMethod method) {
   return testing::coarse_cap_path_case("[0/90]2S", method, 2.0, 0.2, 0.5);
 }
 
+// Natural continuation of case c asked for the depths of run a's points.
+PathResult natural_at_depths_of(CaseFile c, const PathResult& a) {
+  c.path.method = PathMethod::kNatural;
+  c.path.depths.clear();
+  for (std::size_t i = 1; i < a.points.size(); ++i)
+    c.path.depths.push_back(a.points[i].state.depth);
+  IndentationSetup natural(c, 1);
+  return run_indentation_path(natural);
+}
+
 TEST(IndentationPaths, NaturalAndPseudoArclengthAgreeOnTheCap_0_90_2S) {
   IndentationSetup arclength(path_case(PathMethod::kPseudoArclength), 1);
   const PathResult a = run_indentation_path(arclength);
   ASSERT_TRUE(a.completed) << a.reason;
   ASSERT_GT(a.points.size(), 4u);
 
-  CaseFile c = path_case(PathMethod::kNatural);
-  c.path.depths.clear();
-  for (std::size_t i = 1; i < a.points.size(); ++i)
-    c.path.depths.push_back(a.points[i].state.depth);
-  IndentationSetup natural(c, 1);
-  const PathResult b = run_indentation_path(natural);
+  const PathResult b = natural_at_depths_of(path_case(PathMethod::kNatural), a);
   ASSERT_TRUE(b.completed) << b.reason;
 
   // Compare at the arclength run's depths (the natural run may add substeps).
@@ -171,12 +176,7 @@ TEST(IndentationPaths, ThinDeepCapPastItsForceMaximum_PseudoArclengthAndNaturalA
     EXPECT_NEAR(s.force, s.reaction, 1e-9 * scale) << s.depth;
   }
 
-  CaseFile c = snapping_cap(PathMethod::kNatural);
-  c.path.depths.clear();
-  for (std::size_t i = 1; i < a.points.size(); ++i)
-    c.path.depths.push_back(a.points[i].state.depth);
-  IndentationSetup natural(c, 1);
-  const PathResult b = run_indentation_path(natural);
+  const PathResult b = natural_at_depths_of(snapping_cap(PathMethod::kNatural), a);
   ASSERT_TRUE(b.completed) << b.reason;
   std::size_t j = 0, compared_past_peak = 0;
   for (const PathPoint& p : a.points) {
