@@ -158,7 +158,7 @@ IndentationProblem::~IndentationProblem() = default;
 // small-strain field over the undeformed surface, and the face's lateral motion is of the order
 // of the half-space's own radial surface displacement, which Hertz's theory neglects.
 void IndentationProblem::measure_dent_radii(const std::vector<Vector3d>& points, int first) {
-  const Vector3d q = indenter_.reference_point();
+  const Vector3d q = indenter_.pose().position;
   const auto axis_distance = [&](const Vector3d& p) {
     const Vector3d d = p - q;
     return (d - d.dot(direction_) * direction_).norm();

@@ -222,7 +222,7 @@ class IndentationProblem : public cont::Problem {
   DentValue dent(int node, const cont::Vector& z) const;
   void build_pattern();
   NodeGap gap(int i, const std::vector<NodeState>& s, double h, bool derivative) const;
-  // Candidate i's gap value (mm) at the face depth (h - alpha): the node's gap, or its weighted
+  // Candidate i's gap value (mm) at its face depth (h - u_i): the node's gap, or its weighted
   // gap (interpolated traction); contact_gap adds the thin-layer approach of its multiplier.
   double gap_value(int i, const cont::Vector& z, const std::vector<NodeState>& s,
                    double depth) const;

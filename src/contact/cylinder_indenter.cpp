@@ -8,7 +8,7 @@
 namespace si {
 
 CylinderIndenter::CylinderIndenter(double radius, double length, const IndenterPose& pose)
-    : radius_(radius), length_(length), pose_(pose) {
+    : Indenter(pose), radius_(radius), length_(length) {
   const Vector3d& d = pose.direction;
   axis_ = pose.axis - pose.axis.dot(d) * d;
   SI_REQUIRE(axis_.norm() > 1e-8 * pose.axis.norm() && axis_.norm() > 0.0,
@@ -18,7 +18,7 @@ CylinderIndenter::CylinderIndenter(double radius, double length, const IndenterP
 
 Vector3d CylinderIndenter::closest_axis_point(const Vector3d& x, double travel,
                                               bool* on_straight) const {
-  const Vector3d c = pose_.position + travel * pose_.direction;
+  const Vector3d c = pose().position + travel * pose().direction;
   double s = (x - c).dot(axis_);
   *on_straight = true;
   if (length_ > 0.0 && std::abs(s) >= 0.5 * length_) {
@@ -39,7 +39,7 @@ double CylinderIndenter::signed_distance(const Vector3d& x, double travel, Vecto
   bool on_straight = true;
   const Vector3d p = closest_axis_point(x, travel, &on_straight);
   const Matrix3d core = on_straight ? Matrix3d(axis_ * axis_.transpose()) : Matrix3d::Zero();
-  return offset_distance(x, p, radius_, core, -pose_.direction, normal, hessian);
+  return offset_distance(x, p, radius_, core, -pose().direction, normal, hessian);
 }
 
 }  // namespace si

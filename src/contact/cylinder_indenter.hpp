@@ -13,7 +13,6 @@ class CylinderIndenter : public Indenter {
   // `pose.axis` is made perpendicular to `pose.direction` and normalised.
   CylinderIndenter(double radius, double length, const IndenterPose& pose);
   std::string name() const override { return "cylinder"; }
-  Vector3d reference_point() const override { return pose_.position; }
   // (distance to the axis / R)^2 - 1, the cylinder's analogue of paper eq 29.
   double implicit(const Vector3d& x, double travel) const override;
   double signed_distance(const Vector3d& x, double travel, Vector3d* normal,
@@ -26,7 +25,6 @@ class CylinderIndenter : public Indenter {
   Vector3d closest_axis_point(const Vector3d& x, double travel, bool* on_straight) const;
   double radius_;
   double length_;
-  IndenterPose pose_;
   Vector3d axis_;
 };
 

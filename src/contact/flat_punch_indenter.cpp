@@ -7,7 +7,7 @@
 namespace si {
 
 FlatPunchIndenter::FlatPunchIndenter(double radius, double edge_radius, const IndenterPose& pose)
-    : radius_(radius), edge_radius_(edge_radius), pose_(pose) {}
+    : Indenter(pose), radius_(radius), edge_radius_(edge_radius) {}
 
 double FlatPunchIndenter::implicit(const Vector3d& x, double travel) const {
   return signed_distance(x, travel, nullptr, nullptr) / radius_;
@@ -17,9 +17,9 @@ double FlatPunchIndenter::implicit(const Vector3d& x, double travel) const {
 // the direction of travel, radial rho. Core K = {s <= 0, rho <= R'} with R' = R - r_e.
 double FlatPunchIndenter::signed_distance(const Vector3d& x, double travel, Vector3d* normal,
                                           Matrix3d* hessian) const {
-  const Vector3d& d = pose_.direction;
+  const Vector3d& d = pose().direction;
   const double core_radius = radius_ - edge_radius_;
-  const Vector3d c = pose_.position + (travel - edge_radius_) * d;
+  const Vector3d c = pose().position + (travel - edge_radius_) * d;
   const Vector3d v = x - c;
   const double s = v.dot(d);
   const Vector3d w = v - s * d;

@@ -13,7 +13,6 @@ class FlatPunchIndenter : public Indenter {
  public:
   FlatPunchIndenter(double radius, double edge_radius, const IndenterPose& pose);
   std::string name() const override { return "flat_punch"; }
-  Vector3d reference_point() const override { return pose_.position; }
   // The signed distance divided by R: the punch has no polynomial implicit form worth having.
   double implicit(const Vector3d& x, double travel) const override;
   double signed_distance(const Vector3d& x, double travel, Vector3d* normal,
@@ -22,7 +21,6 @@ class FlatPunchIndenter : public Indenter {
  private:
   double radius_;
   double edge_radius_;
-  IndenterPose pose_;
 };
 
 }  // namespace si

@@ -23,9 +23,9 @@ class Indenter {
  public:
   virtual ~Indenter() = default;
   virtual std::string name() const = 0;
-  // The pose's reference point at travel 0 (IndenterPose::position): the line through it along
-  // the direction of travel is the indenter's axis (the contact's axis for a sphere).
-  virtual Vector3d reference_point() const = 0;
+  // Where it starts and where it goes. The line through pose().position along the direction of
+  // travel is the indenter's axis (the contact's axis for a sphere).
+  const IndenterPose& pose() const { return pose_; }
 
   // Implicit function f(x) of the indenter moved by `travel` along its direction: f < 0 inside,
   // f = 0 on the surface, f > 0 outside (paper eq 29 for the super-quadric).
@@ -47,6 +47,12 @@ class Indenter {
 
   // Smallest signed distance of `points` at `travel`.
   double min_distance(const std::vector<Vector3d>& points, double travel) const;
+
+ protected:
+  explicit Indenter(const IndenterPose& pose) : pose_(pose) {}
+
+ private:
+  IndenterPose pose_;
 };
 
 }  // namespace si

@@ -5,7 +5,7 @@
 namespace si {
 
 SphereIndenter::SphereIndenter(double radius, const IndenterPose& pose)
-    : radius_(radius), pose_(pose) {}
+    : Indenter(pose), radius_(radius) {}
 
 double SphereIndenter::implicit(const Vector3d& x, double travel) const {
   return (x - centre(travel)).squaredNorm() / (radius_ * radius_) - 1.0;
@@ -13,7 +13,7 @@ double SphereIndenter::implicit(const Vector3d& x, double travel) const {
 
 double SphereIndenter::signed_distance(const Vector3d& x, double travel, Vector3d* normal,
                                        Matrix3d* hessian) const {
-  return offset_distance(x, centre(travel), radius_, Matrix3d::Zero(), -pose_.direction, normal,
+  return offset_distance(x, centre(travel), radius_, Matrix3d::Zero(), -pose().direction, normal,
                          hessian);
 }
 

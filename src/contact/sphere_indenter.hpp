@@ -10,16 +10,14 @@ class SphereIndenter : public Indenter {
  public:
   SphereIndenter(double radius, const IndenterPose& pose);
   std::string name() const override { return "sphere"; }
-  Vector3d reference_point() const override { return pose_.position; }
   // Paper eq 29: |x - c|^2 / R^2 - 1.
   double implicit(const Vector3d& x, double travel) const override;
   double signed_distance(const Vector3d& x, double travel, Vector3d* normal,
                          Matrix3d* hessian) const override;
 
  private:
-  Vector3d centre(double travel) const { return pose_.position + travel * pose_.direction; }
+  Vector3d centre(double travel) const { return pose().position + travel * pose().direction; }
   double radius_;
-  IndenterPose pose_;
 };
 
 }  // namespace si

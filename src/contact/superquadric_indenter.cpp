@@ -21,7 +21,7 @@ Power power(double t, double p) {
 }  // namespace
 
 SuperquadricIndenter::SuperquadricIndenter(const SuperquadricShape& shape, const IndenterPose& pose)
-    : shape_(shape), pose_(pose) {}
+    : Indenter(pose), shape_(shape) {}
 
 double SuperquadricIndenter::implicit(const Vector3d& x, double travel) const {
   const double g = radial(x, travel, nullptr, nullptr);
@@ -34,7 +34,7 @@ double SuperquadricIndenter::radial(const Vector3d& x, double travel, Vector3d* 
                                     Matrix3d* hess) const {
   const double p = 2.0 / shape_.e2, q = 2.0 / shape_.e1, r = shape_.e2 / shape_.e1;
   const Vector3d scale(1.0 / shape_.a, 1.0 / shape_.b, 1.0 / shape_.c);
-  const Vector3d s = (x - pose_.position - travel * pose_.direction).cwiseProduct(scale);
+  const Vector3d s = (x - pose().position - travel * pose().direction).cwiseProduct(scale);
   const Power pu = power(s.x(), p), pv = power(s.y(), p), pw = power(s.z(), q);
   const double a_sum = pu.value + pv.value;
   const double f = std::pow(a_sum, r) + pw.value;
@@ -74,7 +74,7 @@ double SuperquadricIndenter::signed_distance(const Vector3d& x, double travel, V
   const double g = radial(x, travel, &dg, &d2g);
   const double len = dg.norm();
   if (len == 0.0) {  // the centre: deepest point, direction undefined
-    if (normal) *normal = -pose_.direction;
+    if (normal) *normal = -pose().direction;
     if (hessian) hessian->setZero();
     return -std::min({shape_.a, shape_.b, shape_.c});
   }

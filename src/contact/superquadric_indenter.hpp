@@ -24,7 +24,6 @@ class SuperquadricIndenter : public Indenter {
  public:
   SuperquadricIndenter(const SuperquadricShape& shape, const IndenterPose& pose);
   std::string name() const override { return "superquadric"; }
-  Vector3d reference_point() const override { return pose_.position; }
   // Paper eq 29 generalised: F(x) - 1.
   double implicit(const Vector3d& x, double travel) const override;
   double signed_distance(const Vector3d& x, double travel, Vector3d* normal,
@@ -34,7 +33,6 @@ class SuperquadricIndenter : public Indenter {
   // g = F^(e1/2) - 1 at x with its gradient and Hessian in x.
   double radial(const Vector3d& x, double travel, Vector3d* grad, Matrix3d* hess) const;
   SuperquadricShape shape_;
-  IndenterPose pose_;
 };
 
 }  // namespace si

@@ -1,7 +1,6 @@
 #include "io/path_results.hpp"
 
 #include <cmath>
-#include <iterator>
 #include <sstream>
 
 #include "analysis/local_contact.hpp"
@@ -42,18 +41,26 @@ const char* kColumns[] = {"depth_mm",
 // those stay linear.
 const char* kHermiteColumns[] = {"force_N", "apex_w_mm", "k11_per_mm", "k12_per_mm", "k22_per_mm"};
 
-int column_index(const std::string& name) {
-  for (std::size_t c = 0; c < std::size(kColumns); ++c)
-    if (name == kColumns[c]) return static_cast<int>(c);
+// Position of `name` in `names` (path.csv's columns, the monitors); -1 if absent.
+template <class Names>
+int index_of(const Names& names, const std::string& name) {
+  int i = 0;
+  for (const auto& n : names) {
+    if (name == n) return i;
+    ++i;
+  }
   return -1;
 }
 
-// Point p's slope of column c in the depth (NaN if unknown).
-double column_slope(const PathPoint& p, const std::vector<std::string>& monitors, const char* c) {
-  for (std::size_t m = 0; m < monitors.size(); ++m)
-    if (monitors[m] == c && static_cast<Eigen::Index>(m) < p.depth_slopes.size())
-      return p.depth_slopes[static_cast<Eigen::Index>(m)];
-  return std::nan("");
+int column_index(const std::string& name) {
+  return index_of(kColumns, name);
+}
+
+// Element `name` of `values`, one per monitor (`monitors` order); NaN if absent.
+double monitor_value(const Eigen::VectorXd& values, const std::vector<std::string>& monitors,
+                     const std::string& name) {
+  const int m = index_of(monitors, name);
+  return m >= 0 && m < values.size() ? values[m] : std::nan("");
 }
 
 // The values at depth d inside the segment from a to b: cubic Hermite in the depth for the
@@ -72,19 +79,12 @@ std::vector<double> interpolate(const PathPoint& a, const PathPoint& b, double d
       out[c] = h00 * va[c] + h10 * dd * sa + h01 * vb[c] + h11 * dd * sb;
   };
   for (const char* name : kHermiteColumns)
-    hermite(column_index(name), column_slope(a, monitors, name), column_slope(b, monitors, name));
+    hermite(column_index(name), monitor_value(a.depth_slopes, monitors, name),
+            monitor_value(b.depth_slopes, monitors, name));
   const int force = column_index("force_N"), local = column_index("local_energy_Nmm");
   hermite(column_index("work_Nmm"), va[force], vb[force]);
   if (va[local] == 0 && vb[local] == 0) hermite(column_index("energy_Nmm"), va[force], vb[force]);
   return out;
-}
-
-double monitor(const cont::Event& e, const std::vector<std::string>& names,
-               const std::string& name) {
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name && static_cast<Eigen::Index>(i) < e.monitors.size())
-      return e.monitors[static_cast<Eigen::Index>(i)];
-  return 0.0;
 }
 
 }  // namespace
@@ -136,17 +136,22 @@ std::string path_grid_csv(const PathResult& result, double dh, double depth_max)
 
 nlohmann::json events_json(const PathResult& result) {
   nlohmann::json events = nlohmann::json::array();
-  for (const cont::Event& e : result.events)
+  for (const cont::Event& e : result.events) {
+    const auto at = [&](const char* name) {  // 0 for a monitor the event lacks
+      const double v = monitor_value(e.monitors, result.monitor_names, name);
+      return std::isnan(v) ? 0.0 : v;
+    };
     events.push_back({{"type", e.name},
                       {"monitor", e.monitor},
                       {"against", e.against},
                       {"depth_mm", e.p},
-                      {"force_N", monitor(e, result.monitor_names, "force_N")},
-                      {"k11_per_mm", monitor(e, result.monitor_names, "k11_per_mm")},
-                      {"k22_per_mm", monitor(e, result.monitor_names, "k22_per_mm")},
+                      {"force_N", at("force_N")},
+                      {"k11_per_mm", at("k11_per_mm")},
+                      {"k22_per_mm", at("k22_per_mm")},
                       {"step", e.step},
                       {"located", e.located},
                       {"accuracy", e.accuracy}});
+  }
   return events;
 }
 

@@ -328,13 +328,8 @@ class MaterialTangent {
 
   void add_to(Matrix20d& K) {
     flush();
-    for (int j = 0; j < kShellElementDofs; ++j) {
-      K(j, j) += lower_(j, j);
-      for (int i = j + 1; i < kShellElementDofs; ++i) {
-        K(i, j) += lower_(i, j);
-        K(j, i) += lower_(i, j);
-      }
-    }
+    const Matrix20d full = lower_.selfadjointView<Eigen::Lower>();
+    K += full;
   }
 
  private:
