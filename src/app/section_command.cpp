@@ -1,6 +1,8 @@
 #include "app/section_command.hpp"
 
 #include <cstdio>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "core/error.hpp"
@@ -126,6 +128,32 @@ int run_section_command(const SectionCommandOptions& o, std::ostream& out) {
   return 0;
 }
 
+namespace {
+
+// "      strengths (MPa): X_T 1500, ...; toughness (N/mm): G_Ic 0.277, ..." or nothing.
+std::string failure_properties_line(const Material& m) {
+  std::ostringstream os;
+  auto list = [&](const char* title, auto keys, auto get) {
+    std::string items;
+    for (auto key : keys)
+      if (const auto v = get(key)) {
+        std::ostringstream item;
+        item << key_name(key) << ' ' << *v;
+        items += (items.empty() ? "" : ", ") + item.str();
+      }
+    if (!items.empty()) os << (os.tellp() > 0 ? "; " : "      ") << title << items;
+  };
+  std::vector<StrengthKey> strengths;
+  for (int k = 0; k < kStrengthKeys; ++k) strengths.push_back(StrengthKey(k));
+  std::vector<ToughnessKey> toughness;
+  for (int k = 0; k < kToughnessKeys; ++k) toughness.push_back(ToughnessKey(k));
+  list("strengths (MPa): ", strengths, [&](StrengthKey k) { return m.strengths().get(k); });
+  list("toughness (N/mm): ", toughness, [&](ToughnessKey k) { return m.toughness().get(k); });
+  return os.tellp() > 0 ? os.str() + "\n" : "";
+}
+
+}  // namespace
+
 int run_materials_command(std::ostream& out) {
   out << "Built-in materials (moduli in GPa):\n";
   for (const auto& name : library_material_names()) {
@@ -142,7 +170,7 @@ int run_materials_command(std::ostream& out) {
                     name.c_str(), c.E1 / 1e3, c.E2 / 1e3, c.E3 / 1e3, c.G12 / 1e3, c.G13 / 1e3,
                     c.G23 / 1e3, c.nu12, c.nu13, c.nu23);
     }
-    out << line;
+    out << line << failure_properties_line(m);
   }
   return 0;
 }

@@ -20,7 +20,7 @@ struct UnitDef {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Factors to mm, MPa, N, N*mm, deg. Imperial units are exact by definition
+// Factors to mm, MPa, N, N*mm, deg, N/mm. Imperial units are exact by definition
 // (1 in = 25.4 mm, 1 lbf = 4.4482216152605 N).
 constexpr UnitDef kUnits[] = {
     {"mm", Dimension::kLength, 1.0},
@@ -51,6 +51,13 @@ constexpr UnitDef kUnits[] = {
     {"deg", Dimension::kAngle, 1.0},
     {"°", Dimension::kAngle, 1.0},
     {"rad", Dimension::kAngle, 180.0 / kPi},
+    {"N/mm", Dimension::kFractureToughness, 1.0},
+    {"kJ/m^2", Dimension::kFractureToughness, 1.0},
+    {"kJ/m2", Dimension::kFractureToughness, 1.0},
+    {"J/m^2", Dimension::kFractureToughness, 1e-3},
+    {"J/m2", Dimension::kFractureToughness, 1e-3},
+    {"N/m", Dimension::kFractureToughness, 1e-3},
+    {"lbf/in", Dimension::kFractureToughness, 4.4482216152605 / 25.4},
 };
 
 std::string trim(std::string_view s) {
@@ -93,6 +100,8 @@ std::string dimension_name(Dimension dim) {
       return "energy";
     case Dimension::kAngle:
       return "angle";
+    case Dimension::kFractureToughness:
+      return "fracture toughness";
     case Dimension::kDimensionless:
       return "dimensionless number";
   }
@@ -111,6 +120,8 @@ std::string internal_unit(Dimension dim) {
       return "N*mm";
     case Dimension::kAngle:
       return "deg";
+    case Dimension::kFractureToughness:
+      return "N/mm";
     case Dimension::kDimensionless:
       return "";
   }

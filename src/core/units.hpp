@@ -1,6 +1,7 @@
 // Quantities with explicit units, as users write them in case files and on the command line
 // ("130 GPa", "0.475 mm", "45 deg"). Internal units are fixed for the whole code:
-//   length mm, stress/modulus MPa (= N/mm^2), force N, energy N*mm (= mJ), angle deg.
+//   length mm, stress/modulus MPa (= N/mm^2), force N, energy N*mm (= mJ), angle deg,
+//   fracture toughness (energy per crack area) N/mm (= kJ/m^2).
 // Conversion happens here, once, at input; nothing downstream multiplies by unit factors.
 #pragma once
 
@@ -10,7 +11,15 @@
 
 namespace si {
 
-enum class Dimension { kLength, kStress, kForce, kEnergy, kAngle, kDimensionless };
+enum class Dimension {
+  kLength,
+  kStress,
+  kForce,
+  kEnergy,
+  kAngle,
+  kFractureToughness,
+  kDimensionless
+};
 
 // Name of a dimension ("length") and of its internal unit ("mm").
 std::string dimension_name(Dimension dim);

@@ -1,5 +1,7 @@
 #include "io/material_reader.hpp"
 
+#include <optional>
+
 #include "core/units.hpp"
 #include "io/did_you_mean.hpp"
 #include "io/yaml_reader.hpp"
@@ -41,11 +43,69 @@ Error at_constant(const Error& e, const MapReader& map) {
   return Error(e.kind(), e.reason(), w);
 }
 
-Material read_inline_material(const MapReader& map) {
-  const std::string name = map.scalar_or("name", last_key_part(map.where().key));
-  const bool isotropic = map.choice("type", kMaterialTypes);
+// The failure-property keys (material/ply_strengths.hpp), nested under `strengths:` /
+// `toughness:` or flat beside the elastic constants.
+std::vector<std::string> strength_keys() {
+  std::vector<std::string> keys;
+  for (int k = 0; k < kStrengthKeys; ++k) keys.emplace_back(key_name(StrengthKey(k)));
+  return keys;
+}
+std::vector<std::string> toughness_keys() {
+  std::vector<std::string> keys;
+  for (int k = 0; k < kToughnessKeys; ++k) keys.emplace_back(key_name(ToughnessKey(k)));
+  return keys;
+}
+
+// One failure property, nested or flat; given both ways is refused (which one would count?).
+template <class Key, class Values>
+void read_failure_value(const MapReader& map, const MapReader* nested, Key key, Dimension dim,
+                        Values& values) {
+  const std::string name = key_name(key);
+  if (nested != nullptr && nested->has(name) && map.has(name))
+    throw_input(name + " is given twice: under '" + nested->where().key + "' and beside it",
+                map.where(name));
+  const MapReader& source = (nested != nullptr && nested->has(name)) ? *nested : map;
+  if (!source.has(name)) return;
+  const double value = source.quantity(name, dim);
+  if (!(value > 0.0))
+    throw_input(name + " must be positive (a strength or toughness is a magnitude)",
+                source.where(name));
+  values.set(key, value);
+}
+
+// `strengths: {...}`, `toughness: {...}` and the flat keys of an inline material.
+Material with_failure_properties(const Material& m, const MapReader& map) {
+  std::optional<MapReader> strengths, toughness;
+  if (map.has("strengths")) {
+    strengths.emplace(map.at("strengths"), map.where("strengths"));
+    strengths->allow_only(strength_keys());
+  }
+  if (map.has("toughness")) {
+    toughness.emplace(map.at("toughness"), map.where("toughness"));
+    toughness->allow_only(toughness_keys());
+  }
+  PlyStrengths s;
+  for (int k = 0; k < kStrengthKeys; ++k)
+    read_failure_value(map, strengths ? &*strengths : nullptr, StrengthKey(k), Dimension::kStress,
+                       s);
+  FractureToughness t;
+  for (int k = 0; k < kToughnessKeys; ++k)
+    read_failure_value(map, toughness ? &*toughness : nullptr, ToughnessKey(k),
+                       Dimension::kFractureToughness, t);
+  return m.with_failure_properties(s, t);
+}
+
+// The keys an inline material of this type accepts: its constants and the failure properties.
+std::vector<std::string> inline_keys(std::vector<std::string> constants) {
+  constants.insert(constants.end(), {"type", "name", "strengths", "toughness"});
+  for (const auto& k : strength_keys()) constants.push_back(k);
+  for (const auto& k : toughness_keys()) constants.push_back(k);
+  return constants;
+}
+
+Material read_elastic_constants(const MapReader& map, const std::string& name, bool isotropic) {
   if (isotropic) {
-    map.allow_only({"type", "name", "E", "nu"});
+    map.allow_only(inline_keys({"E", "nu"}));
     const double E = map.quantity("E", Dimension::kStress);
     const double nu = map.quantity("nu", Dimension::kDimensionless);
     try {
@@ -54,7 +114,7 @@ Material read_inline_material(const MapReader& map) {
       throw at_constant(e, map);
     }
   }
-  map.allow_only({"type", "name", "E1", "E2", "E3", "G12", "G13", "G23", "nu12", "nu13", "nu23"});
+  map.allow_only(inline_keys({"E1", "E2", "E3", "G12", "G13", "G23", "nu12", "nu13", "nu23"}));
   EngineeringConstants c;
   c.E1 = map.quantity("E1", Dimension::kStress);
   c.E2 = map.quantity("E2", Dimension::kStress);
@@ -72,17 +132,16 @@ Material read_inline_material(const MapReader& map) {
   }
 }
 
+Material read_inline_material(const MapReader& map) {
+  const std::string name = map.scalar_or("name", last_key_part(map.where().key));
+  const bool isotropic = map.choice("type", kMaterialTypes);
+  return with_failure_properties(read_elastic_constants(map, name, isotropic), map);
+}
+
 std::vector<std::string> entry_names(const YAML::Node& map) {
   std::vector<std::string> names;
   for (const auto& entry : map) names.push_back(entry.first.Scalar());
   return names;
-}
-
-// Material has no setter for its name: rebuild it (the constants were validated already).
-Material renamed(const Material& m, const std::string& name) {
-  const EngineeringConstants& c = m.constants();
-  return m.is_isotropic() ? Material::isotropic(name, c.E1, c.nu12)
-                          : Material::orthotropic(name, c);
 }
 
 }  // namespace
@@ -98,7 +157,7 @@ std::vector<Material> read_material_map(const YAML::Node& node, const Where& con
   std::vector<Material> materials;
   for (const auto& entry : node) {
     const std::string name = entry.first.Scalar();
-    materials.push_back(renamed(read_material(entry.second, map.where(name)), name));
+    materials.push_back(read_material(entry.second, map.where(name)).renamed(name));
   }
   return materials;
 }

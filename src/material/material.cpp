@@ -73,6 +73,22 @@ Material Material::isotropic(std::string name, double E, double nu) {
   return Material(std::move(name), EngineeringConstants{E, E, E, G, G, G, nu, nu, nu}, true);
 }
 
+Material Material::with_failure_properties(const PlyStrengths& strengths,
+                                           const FractureToughness& toughness) const {
+  validate(strengths);
+  validate(toughness);
+  Material out = *this;
+  out.strengths_ = strengths;
+  out.toughness_ = toughness;
+  return out;
+}
+
+Material Material::renamed(std::string name) const {
+  Material out = *this;
+  out.name_ = std::move(name);
+  return out;
+}
+
 Matrix6d Material::compliance() const {
   const auto& c = c_;
   Matrix6d S = Matrix6d::Zero();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/linalg.hpp"
+#include "material/ply_strengths.hpp"
 
 namespace si {
 
@@ -29,6 +30,15 @@ class Material {
   const EngineeringConstants& constants() const { return c_; }
   bool is_isotropic() const { return isotropic_; }
 
+  // Strengths and interlaminar toughness (ply_strengths.hpp), empty unless given.
+  const PlyStrengths& strengths() const { return strengths_; }
+  const FractureToughness& toughness() const { return toughness_; }
+  // A copy carrying these failure properties; validates them (input si::Error naming the key).
+  Material with_failure_properties(const PlyStrengths& strengths,
+                                   const FractureToughness& toughness) const;
+  // A copy under another name (a case file's `materials:` key), everything else kept.
+  Material renamed(std::string name) const;
+
   // Compliance and stiffness in material axes, Voigt order [11, 22, 33, 23, 13, 12] with
   // engineering shear strains (vam.md section 1).
   Matrix6d compliance() const;
@@ -39,6 +49,8 @@ class Material {
   std::string name_;
   EngineeringConstants c_;
   bool isotropic_ = false;
+  PlyStrengths strengths_;
+  FractureToughness toughness_;
 };
 
 }  // namespace si

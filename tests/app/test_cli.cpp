@@ -112,6 +112,10 @@ TEST(Cli, MaterialsListsThePaperMaterial) {
   const auto r = run_cli("materials");
   ASSERT_EQ(r.exit_code, 0);
   EXPECT_TRUE(contains(r.output, "paper-carbon-epoxy")) << r.output;
+  // The prepregs with their strengths and toughness (docs/materials.md).
+  EXPECT_TRUE(contains(r.output, "im7-8552")) << r.output;
+  EXPECT_TRUE(contains(r.output, "X_T 2326.2")) << r.output;
+  EXPECT_TRUE(contains(r.output, "G_IIc 0.788")) << r.output;
 }
 
 }  // namespace

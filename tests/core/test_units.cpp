@@ -19,6 +19,14 @@ TEST(Units, ConvertsToInternalUnits) {
   EXPECT_DOUBLE_EQ(parse_quantity("1 J", Dimension::kEnergy), 1000.0);
   EXPECT_DOUBLE_EQ(parse_quantity("0.3", Dimension::kDimensionless), 0.3);
   EXPECT_NEAR(parse_quantity("1 ksi", Dimension::kStress), 6.894757293168361, 1e-12);
+  // Fracture toughness, energy per crack area: 1 kJ/m^2 = 1 N/mm.
+  EXPECT_DOUBLE_EQ(parse_quantity("0.5 N/mm", Dimension::kFractureToughness), 0.5);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.788 kJ/m^2", Dimension::kFractureToughness), 0.788);
+  EXPECT_DOUBLE_EQ(parse_quantity("277 J/m^2", Dimension::kFractureToughness), 0.277);
+  EXPECT_NEAR(parse_quantity("1 lbf/in", Dimension::kFractureToughness), 0.17512683524647637,
+              1e-15);
+  EXPECT_THROW(parse_quantity("0.5 MPa", Dimension::kFractureToughness), Error);
+  EXPECT_THROW(parse_quantity("0.5", Dimension::kFractureToughness), Error);
 }
 
 TEST(Units, RefusesMissingWrongAndUnknownUnits) {
