@@ -211,7 +211,9 @@ TEST(PaganoRecovery, Sigma33ProfileByEquilibrium) {
       // up to 9 % of q at every S.
       const double tolerance = S < 5 ? 0.045 : S < 50 ? 0.012 : 1e-3;
       EXPECT_NEAR(s.equilibrium, s.exact, tolerance) << "S " << S << " z " << z;
-      if (z != 0.0) EXPECT_GT(std::abs(s.linear - s.exact), 0.06) << "S " << S << " z " << z;
+      if (z != 0.0) {
+        EXPECT_GT(std::abs(s.linear - s.exact), 0.06) << "S " << S << " z " << z;
+      }
     }
 }
 
