@@ -8,11 +8,9 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
+#include "continuation/linear_algebra.hpp"
 
 namespace si::cont {
-
-using Vector = Eigen::VectorXd;
 
 class Problem {
  public:
