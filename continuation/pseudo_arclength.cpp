@@ -134,14 +134,15 @@ Branch pseudo_arclength(Problem& problem, Vector x0, double p0, const Settings& 
                         const Callback& callback) {
   BorderedSolver bordered(problem, settings.parameter_weight);
   ArclengthStepper stepper(problem, bordered, settings);
-  return trace(problem, stepper, bordered, x0, p0, settings, callback, std::nullopt);
+  return trace(problem, stepper, bordered, {x0, p0, Vector(), double(settings.direction), 0},
+               settings, callback, std::nullopt);
 }
 
 Branch pseudo_arclength(Problem& problem, const Checkpoint& resume, const Settings& settings,
                         const Callback& callback) {
   BorderedSolver bordered(problem, settings.parameter_weight);
   ArclengthStepper stepper(problem, bordered, settings);
-  return trace(problem, stepper, bordered, Vector(), 0.0, settings, callback, resume);
+  return trace(problem, stepper, bordered, Start{}, settings, callback, resume);
 }
 
 }  // namespace si::cont
