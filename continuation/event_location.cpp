@@ -9,6 +9,22 @@ int sign(double v) {
   return v > 0.0 ? 1 : (v < 0.0 ? -1 : 0);
 }
 
+// A point at sigma; if it cannot be had (regula falsi lands exactly on a root where J is singular,
+// e.g. a bifurcation whose indicator is linear), a point slightly off it towards the bracket's
+// middle, then the middle itself.
+// sigma is set to where the point was found.
+bool solve_near(const SegmentSolver& solve, double& sigma, double middle, TangentPoint& out) {
+  if (solve(sigma, out)) return true;
+  for (const double other : {sigma + 1e-3 * (middle - sigma), middle}) {
+    if (other == sigma) continue;
+    if (solve(other, out)) {
+      sigma = other;
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 double locate_root(const std::function<double(const TangentPoint&)>& g, const SegmentPoint& a,
@@ -37,7 +53,7 @@ double locate_root(const std::function<double(const TangentPoint&)>& g, const Se
     }
     if (!(sigma > lo.sigma && sigma < hi.sigma)) sigma = 0.5 * (lo.sigma + hi.sigma);
     TangentPoint trial;
-    if (!solve(sigma, trial)) break;
+    if (!solve_near(solve, sigma, 0.5 * (lo.sigma + hi.sigma), trial)) break;
     const double value = g(trial);
     if (std::isnan(value)) break;
     if (sign(value) == sign(lo.g)) {

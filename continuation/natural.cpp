@@ -101,8 +101,9 @@ Branch natural(Problem& problem, Vector x0, double p0, const Settings& settings,
   settings.validate();
   NaturalStepper stepper(problem, settings, p0);
   BorderedSolver bordered(problem, settings.parameter_weight);
-  return trace(problem, stepper, bordered, {x0, p0, Vector(), double(settings.direction), 0},
-               settings, callback, std::nullopt);
+  return trace(problem, stepper, bordered,
+               {x0, p0, Vector(), static_cast<double>(settings.direction), 0}, settings, callback,
+               std::nullopt);
 }
 
 Branch natural(Problem& problem, const Checkpoint& resume, const Settings& settings,
