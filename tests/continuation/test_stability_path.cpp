@@ -37,8 +37,8 @@ double relative(double value, double reference) {
   return std::abs(value / reference - 1.0);
 }
 
-// Two limit points P = +-P* (Pecknold et al. 1985 give the same closed form for the shallow
-// two-bar truss); stability lost at the first and regained at the second.
+// Two limit points P = +-P* (closed form in structural_test_problems.hpp); stability lost at the
+// first and regained at the second.
 TEST(ContStability, VonMisesTrussLimitLoadsClosedForm) {
   test::VonMisesTruss truss(0.1, 1.0, 1000.0);
   const double p_star = truss.limit_load();
