@@ -33,9 +33,10 @@ int sign(double v) {
 }
 
 struct Sample {
-  SegmentPoint at;
+  double sigma = 0.0;
+  TangentPoint point;
   int sign = 0;
-  bool solved = true;
+  SegmentPoint at() const { return {sigma, point}; }
 };
 
 // Slope extremum (b = p): d2m/dp2 = g / (dp/ds)^3 goes from + to - at a maximum of dm/dp.
@@ -83,15 +84,14 @@ std::vector<Event> feature_events(const Indicator& ind, const std::vector<std::s
 
   // Rule 3: the step's sub-intervals, interior points re-solved.
   const int parts = settings.feature_refinement;
-  std::vector<Sample> samples{{a, sa, true}};
+  std::vector<Sample> samples{{a.sigma, a.point, sa}};
   for (int i = 1; i < parts; ++i) {
     Sample s;
-    s.at.sigma = a.sigma + (b.sigma - a.sigma) * i / parts;
-    s.solved = solve(s.at.sigma, s.at.point);
-    s.sign = s.solved ? signed_at(s.at.point) : 0;
+    s.sigma = a.sigma + (b.sigma - a.sigma) * i / parts;
+    s.sign = solve(s.sigma, s.point) ? signed_at(s.point) : 0;
     samples.push_back(std::move(s));
   }
-  samples.push_back({b, sb, true});
+  samples.push_back({b.sigma, b.point, sb});
 
   std::vector<Event> events;
   const auto g = [&ind, &scales](const TangentPoint& tp) {
@@ -101,11 +101,11 @@ std::vector<Event> feature_events(const Indicator& ind, const std::vector<std::s
     const Sample& lo = samples[i];
     const Sample& hi = samples[i + 1];
     if (lo.sign == 0 || hi.sign == 0 || lo.sign == hi.sign) continue;
-    if (lo.at.point.point.signature != hi.at.point.point.signature) continue;  // rule 4
+    if (lo.point.point.signature != hi.point.point.signature) continue;  // rule 4
     TangentPoint at;
     bool located = false;
-    const double accuracy = locate_root(g, lo.at, hi.at, solve, settings, at, located);
-    Event event = event_at(feature_type(ind, lo.at.point.point, scales), ind, names, at);
+    const double accuracy = locate_root(g, lo.at(), hi.at(), solve, settings, at, located);
+    Event event = event_at(feature_type(ind, lo.point.point, scales), ind, names, at);
     event.located = located;
     event.accuracy = accuracy;
     events.push_back(std::move(event));

@@ -15,10 +15,11 @@ namespace si::cont {
 // Puts a converged, analysed point on the current segment at local coordinate sigma.
 using SegmentSolver = std::function<bool(double sigma, TangentPoint& out)>;
 
-// A point of the segment with its local coordinate.
+// A point of the segment with its local coordinate (a view: the point is not copied, so that
+// steps without events cost no copy of x).
 struct SegmentPoint {
-  double sigma = 0.0;
-  TangentPoint point;
+  double sigma;
+  const TangentPoint& point;
 };
 
 // The root of the continuous function g between lo and hi (lo.sigma < hi.sigma, g(lo) and g(hi)
