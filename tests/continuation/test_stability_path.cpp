@@ -287,5 +287,38 @@ TEST(ContStability, CheckpointKeepsStabilityAndSwitchingData) {
   EXPECT_EQ(a.points.back().x, b.points.back().x);
 }
 
+// A run stopped before the bifurcation and resumed from its checkpoint repeats the uninterrupted
+// one, stability and events included.
+TEST(ContStability, ResumedRunRepeatsTheUninterruptedOne) {
+  const Vector x0{{0.0, 0.5, 0.0}};
+  Settings s = column_settings();
+  test::RigidBarColumn column(2.0, 0.5);
+  const Branch full = pseudo_arclength(column, x0, 0.0, s);
+  s.checkpoint_path = ::testing::TempDir() + "stability_resume.json";
+  s.checkpoint_interval = 3;
+  int calls = 0;
+  const Branch cut = pseudo_arclength(
+      column, x0, 0.0, s, [&calls](const Point&, const Branch&) { return ++calls < 8; });
+  ASSERT_EQ(cut.status, Status::kStoppedByCallback);
+  ASSERT_TRUE(test::events_of(cut, EventType::kStabilityChange).empty());
+  const Checkpoint checkpoint = load_checkpoint(s.checkpoint_path);
+  std::remove(s.checkpoint_path.c_str());
+  s.checkpoint_path.clear();
+  s.checkpoint_interval = 0;
+  const Branch resumed = pseudo_arclength(column, checkpoint, s);
+  ASSERT_EQ(resumed.points.size(), full.points.size());
+  for (std::size_t i = 0; i < full.points.size(); ++i) {
+    EXPECT_EQ(resumed.points[i].p, full.points[i].p);
+    EXPECT_EQ(resumed.points[i].negative_eigenvalues, full.points[i].negative_eigenvalues);
+    EXPECT_EQ(resumed.points[i].eigenvalues, full.points[i].eigenvalues);
+  }
+  const auto a = test::events_of(full, EventType::kStabilityChange);
+  const auto b = test::events_of(resumed, EventType::kStabilityChange);
+  ASSERT_EQ(a.size(), 1u);
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(a[0].p, b[0].p);
+  EXPECT_EQ(a[0].mode, b[0].mode);
+}
+
 }  // namespace
 }  // namespace si::cont
