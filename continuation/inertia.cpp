@@ -62,10 +62,10 @@ bool SparseLdlt::factorize(const SparseMatrix& K, double sigma) {
   return true;
 }
 
-bool SparseLdlt::solve(Vector& b) const {
-  if (!factored_ || b.size() != rows_) return false;
-  b = ldlt_.solve(b);
-  return b.allFinite();
+bool SymmetricFactorization::solve(Vector& b) const {
+  if (b.size() != rows()) return false;
+  const Vector in = b;
+  return solve(in.data(), b.data());
 }
 
 bool SparseLdlt::solve(const double* in, double* out) const {

@@ -16,6 +16,9 @@
 // Docs: docs/theory/continuation.md, "Stability".
 #pragma once
 
+#include <functional>
+#include <memory>
+
 #include <Eigen/SparseCholesky>
 
 #include "continuation/sparse_matrix.hpp"
@@ -28,23 +31,42 @@ struct Inertia {
   int positive = 0;
 };
 
-class SparseLdlt {
+// A factorization of K - sigma I that knows its inertia and solves with it: what the stability
+// tools need (lowest_eigenpairs.hpp, stability_analysis.hpp). SparseLdlt below is the default;
+// cholmod_factorization.hpp is the fast one for large problems.
+class SymmetricFactorization {
+ public:
+  virtual ~SymmetricFactorization() = default;
+  // Factor K - sigma I (K symmetric, both triangles stored). false when no factorization could
+  // be made.
+  virtual bool factorize(const SparseMatrix& K, double sigma) = 0;
+  // The inertia of K - sigma I (for the sigma given to factorize()).
+  virtual const Inertia& inertia() const = 0;
+  // The shift of the factorization kept for solves (sigma, unless a zero pivot moved it).
+  virtual double shift() const = 0;
+  virtual Eigen::Index rows() const = 0;
+  // (K - shift() I) out = in. false if not factored.
+  virtual bool solve(const double* in, double* out) const = 0;
+  bool solve(Vector& b) const;
+};
+
+// Makes a fresh factorization (for the lower shifts of lowest_eigenpairs).
+using FactorizationFactory = std::function<std::unique_ptr<SymmetricFactorization>()>;
+
+class SparseLdlt final : public SymmetricFactorization {
  public:
   explicit SparseLdlt(double zero_pivot_tolerance = 1e-12)
       : zero_pivot_tolerance_(zero_pivot_tolerance) {}
 
-  // Factor K - sigma I (K symmetric: only its lower triangle is read). false when no
-  // factorization could be made (not even at the shifted sigma: a structurally singular K).
-  bool factorize(const SparseMatrix& K, double sigma = 0.0);
-
-  // The inertia of K - sigma I (for the sigma given to factorize()).
-  const Inertia& inertia() const { return inertia_; }
-  // The shift of the factorization kept for solves: sigma, or sigma - delta after a zero pivot.
-  double shift() const { return shift_; }
-  Eigen::Index rows() const { return rows_; }
-  // (K - shift() I) y = b in place. false if not factored.
-  bool solve(Vector& b) const;
-  bool solve(const double* in, double* out) const;
+  // Only K's lower triangle is read. false when no factorization could be made (not even at the
+  // shifted sigma: a structurally singular K).
+  bool factorize(const SparseMatrix& K, double sigma) override;
+  const Inertia& inertia() const override { return inertia_; }
+  // sigma, or sigma - delta after a zero pivot.
+  double shift() const override { return shift_; }
+  Eigen::Index rows() const override { return rows_; }
+  bool solve(const double* in, double* out) const override;
+  using SymmetricFactorization::solve;
 
  private:
   bool factor_at(const SparseMatrix& K, double sigma);

@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 
@@ -16,7 +17,8 @@ namespace {
 class ShiftSolve {
  public:
   using Scalar = double;
-  explicit ShiftSolve(const SparseLdlt& factorization) : factorization_(factorization) {}
+  explicit ShiftSolve(const SymmetricFactorization& factorization)
+      : factorization_(factorization) {}
   Eigen::Index rows() const { return factorization_.rows(); }
   Eigen::Index cols() const { return factorization_.rows(); }
   void set_shift(double) {}  // the factorization carries its own shift
@@ -25,7 +27,7 @@ class ShiftSolve {
   }
 
  private:
-  const SparseLdlt& factorization_;
+  const SymmetricFactorization& factorization_;
 };
 
 // Sorts ascending and fixes each vector's sign (largest entry positive), so that results are
@@ -54,8 +56,8 @@ void dense_lowest(const SparseMatrix& K, int k, Eigenpairs& out) {
 }
 
 // The k eigenpairs nearest the factorization's shift. false if Lanczos did not converge.
-bool nearest(const SparseLdlt& factorization, int k, const EigenOptions& options, Vector& values,
-             Matrix& vectors) {
+bool nearest(const SymmetricFactorization& factorization, int k, const EigenOptions& options,
+             Vector& values, Matrix& vectors) {
   const auto n = factorization.rows();
   ShiftSolve op(factorization);
   const Eigen::Index ncv = std::min<Eigen::Index>(n, std::max(2 * k + 1, 20));
@@ -75,8 +77,9 @@ bool nearest(const SparseLdlt& factorization, int k, const EigenOptions& options
 
 }  // namespace
 
-bool lowest_eigenpairs(const SparseMatrix& K, int k, const SparseLdlt& factorization,
-                       const EigenOptions& options, Eigenpairs& out) {
+bool lowest_eigenpairs(const SparseMatrix& K, int k, const SymmetricFactorization& factorization,
+                       const EigenOptions& options, Eigenpairs& out,
+                       const FactorizationFactory& make) {
   const auto n = static_cast<int>(K.rows());
   k = std::min(k, n);
   if (k <= 0) {
@@ -87,8 +90,8 @@ bool lowest_eigenpairs(const SparseMatrix& K, int k, const SparseLdlt& factoriza
     dense_lowest(K, k, out);
     return true;
   }
-  const SparseLdlt* current = &factorization;
-  SparseLdlt shifted;
+  const SymmetricFactorization* current = &factorization;
+  std::unique_ptr<SymmetricFactorization> shifted = make ? make() : std::make_unique<SparseLdlt>();
   for (int attempt = 0; attempt <= options.max_shifts; ++attempt) {
     Vector values;
     Matrix vectors;
@@ -101,8 +104,8 @@ bool lowest_eigenpairs(const SparseMatrix& K, int k, const SparseLdlt& factoriza
     }
     const double lowest = values.minCoeff();
     const double drop = std::max({sigma - lowest, values.maxCoeff() - lowest, 1e-300});
-    if (!shifted.factorize(K, lowest - drop)) return false;
-    current = &shifted;
+    if (!shifted->factorize(K, lowest - drop)) return false;
+    current = shifted.get();
   }
   return false;
 }

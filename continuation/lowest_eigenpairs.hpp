@@ -1,8 +1,8 @@
 // The algebraically lowest k eigenpairs of a sparse symmetric matrix K, by shift-invert Lanczos
 // (Spectra's SymEigsShiftSolver: the implicitly restarted Lanczos method of ARPACK on
 // (K - sigma I)^-1, whose largest eigenvalues 1/(lambda - sigma) are those of K nearest sigma;
-// Ericsson & Ruhe 1980, Grimes, Lewis & Simon 1994). The operator is applied with a SparseLdlt
-// factorization, the one already made for the inertia when it is usable.
+// Ericsson & Ruhe 1980, Grimes, Lewis & Simon 1994). The operator is applied with the
+// factorization already made for the inertia (a SymmetricFactorization).
 //
 // Nearest sigma is not lowest: the k eigenvalues nearest sigma are the k lowest exactly when they
 // include every eigenvalue below sigma, whose number the factorization's inertia gives (Sylvester).
@@ -32,9 +32,11 @@ struct Eigenpairs {
   Matrix vectors;  // columns: unit (Euclidean) eigenvectors, sign fixed: largest entry positive
 };
 
-// K symmetric, both triangles stored; `factorization` of K at its shift() (usually 0). k is
-// clipped to K's size. false if Spectra did not converge or no usable shift was found.
-bool lowest_eigenpairs(const SparseMatrix& K, int k, const SparseLdlt& factorization,
-                       const EigenOptions& options, Eigenpairs& out);
+// K symmetric, both triangles stored; `factorization` of K at its shift() (usually 0); `make`
+// builds the factorizations at lower shifts (empty: SparseLdlt). k is clipped to K's size. false
+// if Spectra did not converge or no usable shift was found.
+bool lowest_eigenpairs(const SparseMatrix& K, int k, const SymmetricFactorization& factorization,
+                       const EigenOptions& options, Eigenpairs& out,
+                       const FactorizationFactory& make = {});
 
 }  // namespace si::cont

@@ -12,12 +12,17 @@ bool analyse_stability(const SparseMatrix& K, const SparseMatrix& A, int modes, 
   const SparseMatrix reduced = constrained ? restrict_to_null_space(K, basis.Z) : SparseMatrix();
   const SparseMatrix& tangent = constrained ? reduced : K;
 
-  SparseLdlt factorization(options.zero_pivot_tolerance);
-  if (!factorization.factorize(tangent, 0.0)) return false;
-  out.negative = factorization.inertia().negative;
-  out.zero = factorization.inertia().zero;
+  const double tol = options.zero_pivot_tolerance;
+  const FactorizationFactory make =
+      options.factorization
+          ? options.factorization
+          : FactorizationFactory([tol] { return std::make_unique<SparseLdlt>(tol); });
+  const std::unique_ptr<SymmetricFactorization> factorization = make();
+  if (!factorization->factorize(tangent, 0.0)) return false;
+  out.negative = factorization->inertia().negative;
+  out.zero = factorization->inertia().zero;
   Eigenpairs pairs;
-  if (!lowest_eigenpairs(tangent, modes, factorization, options.eigen, pairs)) return false;
+  if (!lowest_eigenpairs(tangent, modes, *factorization, options.eigen, pairs, make)) return false;
   out.eigenvalues = pairs.values;
   out.modes.clear();
   for (Eigen::Index c = 0; c < pairs.vectors.cols(); ++c)

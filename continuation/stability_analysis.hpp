@@ -15,7 +15,11 @@ namespace si::cont {
 
 struct StabilityOptions {
   EigenOptions eigen;
-  double zero_pivot_tolerance = 1e-12;  // inertia.hpp
+  // The factorization of the restricted tangent (inertia.hpp); empty: SparseLdlt with
+  // zero_pivot_tolerance. For large problems cholmod_first_factorization()
+  // (cholmod_factorization.hpp) is several times faster.
+  FactorizationFactory factorization;
+  double zero_pivot_tolerance = 1e-12;  // SparseLdlt, inertia.hpp
   double rank_tolerance = 1e-12;        // constraint_null_space.hpp
 };
 

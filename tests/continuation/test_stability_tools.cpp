@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "../verification_record.hpp"
+#include "continuation/cholmod_factorization.hpp"
 #include "continuation/constraint_null_space.hpp"
 #include "continuation/stability_analysis.hpp"
 #include "random_sparse.hpp"
@@ -56,7 +58,7 @@ TEST(ContInertia, ExactZeroPivotCountedAsZero) {
   K.insert(2, 2) = -1.0;
   K.insert(3, 3) = 3.0;
   SparseLdlt ldlt;
-  ASSERT_TRUE(ldlt.factorize(K));
+  ASSERT_TRUE(ldlt.factorize(K, 0.0));
   EXPECT_EQ(ldlt.inertia().negative, 1);
   EXPECT_EQ(ldlt.inertia().zero, 1);
   EXPECT_EQ(ldlt.inertia().positive, 2);
@@ -126,8 +128,10 @@ TEST(ContConstraintNullSpace, OverlappingAndRankDeficientRows) {
 }
 
 // The restricted tangent: negative count exact and lowest eigenvalues to 1e-10 relative against
-// the dense Z_d' K Z_d with Z_d from an SVD of A, for stable, slightly and strongly unstable K.
-TEST(ContStabilityAnalysis, RestrictedTangentMatchesDenseReducedSolve) {
+// the dense Z_d' K Z_d with Z_d from an SVD of A, for stable, slightly and strongly unstable K;
+// with the default LDL' and with CHOLMOD's Cholesky first (LDL' when not positive definite).
+void expect_restricted_tangent_matches_dense(const StabilityOptions& options,
+                                             const std::string& name) {
   const int nodes = 70;
   const int dofs = 3;
   const int n = nodes * dofs;
@@ -140,7 +144,7 @@ TEST(ContStabilityAnalysis, RestrictedTangentMatchesDenseReducedSolve) {
     SparseMatrix K = K0;
     for (int i = 0; i < n; ++i) K.coeffRef(i, i) -= shift;
     Stability s;
-    ASSERT_TRUE(analyse_stability(K, A, modes, s)) << "shift " << shift;
+    ASSERT_TRUE(analyse_stability(K, A, modes, s, options)) << "shift " << shift;
     const Vector reference = reduced0.head(modes).array() - shift;
     EXPECT_EQ(s.negative, count_below(reduced0, shift)) << "shift " << shift;
     EXPECT_EQ(s.zero, 0);
@@ -148,7 +152,7 @@ TEST(ContStabilityAnalysis, RestrictedTangentMatchesDenseReducedSolve) {
     EXPECT_LT(error, 1e-10) << "shift " << shift;
     si::test::record_verification_absolute(
         "continuation-library",
-        "restricted tangent Z'KZ, " + std::to_string(s.negative) +
+        "restricted tangent Z'KZ, " + name + ", " + std::to_string(s.negative) +
             " negative: lowest 4 eigenvalues, max relative error",
         0.0, error, 1e-10, "dense Z_d' K Z_d, Z_d from an SVD of A");
     ASSERT_EQ(s.modes.size(), static_cast<std::size_t>(modes));
@@ -163,6 +167,26 @@ TEST(ContStabilityAnalysis, RestrictedTangentMatchesDenseReducedSolve) {
       EXPECT_LT((Zd.transpose() * r).norm(), 1e-9 * Kd.norm());
     }
   }
+}
+
+TEST(ContStabilityAnalysis, RestrictedTangentMatchesDenseReducedSolve) {
+  expect_restricted_tangent_matches_dense(StabilityOptions{}, "LDL'");
+}
+
+TEST(ContStabilityAnalysis, CholmodFirstMatchesDenseReducedSolve) {
+  StabilityOptions options;
+  options.factorization = cholmod_first_factorization();
+  expect_restricted_tangent_matches_dense(options, "CHOLMOD LL' first");
+  // The Cholesky is taken when positive definite, the LDL' otherwise.
+  const SparseMatrix K = test::random_symmetric(30, 3, 0.0, 23);
+  CholmodFirstFactorization f;
+  ASSERT_TRUE(f.factorize(K, -1e3));
+  EXPECT_TRUE(f.positive_definite());
+  EXPECT_EQ(f.inertia().positive, 90);
+  ASSERT_TRUE(f.factorize(
+      K, 0.5 * (test::dense_eigenvalues(Matrix(K))(4) + test::dense_eigenvalues(Matrix(K))(5))));
+  EXPECT_FALSE(f.positive_definite());
+  EXPECT_EQ(f.inertia().negative, 5);
 }
 
 TEST(ContStabilityAnalysis, MultiplierDirectionCompletesTheNullVector) {
