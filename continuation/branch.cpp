@@ -18,6 +18,24 @@ std::string event_type_name(EventType type) {
       return "inflection";
     case EventType::kBifurcation:
       return "bifurcation";
+    case EventType::kStabilityChange:
+      return "stability_change";
+    case EventType::kSlopeMax:
+      return "slope_max";
+    case EventType::kSlopeMin:
+      return "slope_min";
+  }
+  return "unknown";
+}
+
+std::string criticality_name(Criticality criticality) {
+  switch (criticality) {
+    case Criticality::kNone:
+      return "none";
+    case Criticality::kLimitPoint:
+      return "limit_point";
+    case Criticality::kBifurcation:
+      return "bifurcation";
   }
   return "unknown";
 }

@@ -45,18 +45,54 @@ Vector to_vector(const json& j) {
   return v;
 }
 
+// Keys written only when set, so that the checkpoints of runs without stability, curve features
+// or branch switching keep their version-1 form byte for byte; read back with defaults.
+void add_optional(json& j, const Point& p) {
+  if (p.monitor_curvature_errors.size() > 0) {
+    j["monitor_curvature_errors"] = vector(p.monitor_curvature_errors);
+    j["parameter_curvature"] = number(p.parameter_curvature);
+    j["parameter_curvature_error"] = number(p.parameter_curvature_error);
+  }
+  if (p.negative_eigenvalues >= 0) {
+    j["negative_eigenvalues"] = p.negative_eigenvalues;
+    j["zero_eigenvalues"] = p.zero_eigenvalues;
+    j["stable"] = p.stable;
+    j["lowest_eigenvalue"] = number(p.lowest_eigenvalue);
+    j["eigenvalues"] = vector(p.eigenvalues);
+  }
+  if (p.branch_id != 0) j["branch_id"] = p.branch_id;
+}
+
+void read_optional(const json& j, Point& p) {
+  if (j.contains("monitor_curvature_errors")) {
+    p.monitor_curvature_errors = to_vector(j.at("monitor_curvature_errors"));
+    p.parameter_curvature = to_double(j.at("parameter_curvature"));
+    p.parameter_curvature_error = to_double(j.at("parameter_curvature_error"));
+  }
+  if (j.contains("negative_eigenvalues")) {
+    p.negative_eigenvalues = j.at("negative_eigenvalues").get<int>();
+    p.zero_eigenvalues = j.at("zero_eigenvalues").get<int>();
+    p.stable = j.at("stable").get<bool>();
+    p.lowest_eigenvalue = to_double(j.at("lowest_eigenvalue"));
+    p.eigenvalues = to_vector(j.at("eigenvalues"));
+  }
+  p.branch_id = j.value("branch_id", 0);
+}
+
 json point_json(const Point& p, bool with_x = true) {
-  return {{"x", with_x ? vector(p.x) : json::array()},
-          {"p", number(p.p)},
-          {"tangent_p", number(p.tangent_p)},
-          {"monitors", vector(p.monitors)},
-          {"monitor_slopes", vector(p.monitor_slopes)},
-          {"monitor_curvatures", vector(p.monitor_curvatures)},
-          {"signature", p.signature},
-          {"jacobian_sign", p.jacobian_sign},
-          {"newton_iterations", p.newton_iterations},
-          {"step", number(p.step)},
-          {"arclength", number(p.arclength)}};
+  json j = {{"x", with_x ? vector(p.x) : json::array()},
+            {"p", number(p.p)},
+            {"tangent_p", number(p.tangent_p)},
+            {"monitors", vector(p.monitors)},
+            {"monitor_slopes", vector(p.monitor_slopes)},
+            {"monitor_curvatures", vector(p.monitor_curvatures)},
+            {"signature", p.signature},
+            {"jacobian_sign", p.jacobian_sign},
+            {"newton_iterations", p.newton_iterations},
+            {"step", number(p.step)},
+            {"arclength", number(p.arclength)}};
+  add_optional(j, p);
+  return j;
 }
 
 Point to_point(const json& j) {
@@ -72,26 +108,45 @@ Point to_point(const json& j) {
   p.newton_iterations = j.at("newton_iterations").get<int>();
   p.step = to_double(j.at("step"));
   p.arclength = to_double(j.at("arclength"));
+  read_optional(j, p);
   return p;
 }
 
 json event_json(const Event& e, bool with_x) {
-  return {{"type", e.name},
-          {"monitor", e.monitor},
-          {"against", e.against},
-          {"p", number(e.p)},
-          {"x", with_x ? vector(e.x) : json::array()},
-          {"monitors", vector(e.monitors)},
-          {"step", e.step},
-          {"located", e.located},
-          {"accuracy", number(e.accuracy)},
-          {"arclength", number(e.arclength)}};
+  json j = {{"type", e.name},
+            {"monitor", e.monitor},
+            {"against", e.against},
+            {"p", number(e.p)},
+            {"x", with_x ? vector(e.x) : json::array()},
+            {"monitors", vector(e.monitors)},
+            {"step", e.step},
+            {"located", e.located},
+            {"accuracy", number(e.accuracy)},
+            {"arclength", number(e.arclength)}};
+  if (e.branch_id != 0) j["branch_id"] = e.branch_id;
+  if (e.criticality != Criticality::kNone) {
+    j["criticality"] = criticality_name(e.criticality);
+    j["negative_before"] = e.negative_before;
+    j["negative_after"] = e.negative_after;
+    j["eigenvalue"] = number(e.eigenvalue);
+    j["mode"] = with_x ? vector(e.mode) : json::array();
+    j["tangent_x"] = with_x ? vector(e.tangent_x) : json::array();
+    j["tangent_p"] = number(e.tangent_p);
+  }
+  return j;
+}
+
+Criticality to_criticality(const std::string& name) {
+  for (Criticality c : {Criticality::kNone, Criticality::kLimitPoint, Criticality::kBifurcation})
+    if (criticality_name(c) == name) return c;
+  throw std::runtime_error("unknown criticality '" + name + "'");
 }
 
 EventType to_event_type(const std::string& name) {
   for (EventType t : {EventType::kLimitPoint, EventType::kMonitorMax, EventType::kMonitorMin,
                       EventType::kZeroCrossing, EventType::kSignatureChange, EventType::kInflection,
-                      EventType::kBifurcation})
+                      EventType::kBifurcation, EventType::kStabilityChange, EventType::kSlopeMax,
+                      EventType::kSlopeMin})
     if (event_type_name(t) == name) return t;
   throw std::runtime_error("unknown event type '" + name + "'");
 }
@@ -109,6 +164,16 @@ Event to_event(const json& j) {
   e.located = j.at("located").get<bool>();
   e.accuracy = to_double(j.at("accuracy"));
   e.arclength = to_double(j.at("arclength"));
+  e.branch_id = j.value("branch_id", 0);
+  if (j.contains("criticality")) {
+    e.criticality = to_criticality(j.at("criticality").get<std::string>());
+    e.negative_before = j.at("negative_before").get<int>();
+    e.negative_after = j.at("negative_after").get<int>();
+    e.eigenvalue = to_double(j.at("eigenvalue"));
+    e.mode = to_vector(j.at("mode"));
+    e.tangent_x = to_vector(j.at("tangent_x"));
+    e.tangent_p = to_double(j.at("tangent_p"));
+  }
   return e;
 }
 

@@ -5,6 +5,9 @@
 #include <limits>
 #include <stdexcept>
 
+#include "continuation/curve_features.hpp"
+#include "continuation/stability_events.hpp"
+
 namespace si::cont {
 namespace {
 
@@ -26,7 +29,7 @@ double value_or_nan(const Vector& v, int i) {
   return i >= 0 && i < v.size() ? v(i) : std::numeric_limits<double>::quiet_NaN();
 }
 
-// The continuous indicator's value at a point (NaN when unavailable).
+// The simple continuous indicators' value at a point (NaN when unavailable).
 double continuous_value(const Indicator& ind, const Point& pt) {
   switch (ind.type) {
     case EventType::kLimitPoint:
@@ -36,11 +39,6 @@ double continuous_value(const Indicator& ind, const Point& pt) {
     case EventType::kMonitorMax:
     case EventType::kMonitorMin:
       return value_or_nan(pt.monitor_slopes, ind.monitor);
-    case EventType::kInflection:
-      return value_or_nan(pt.monitor_curvatures, ind.monitor) *
-                 value_or_nan(pt.monitor_slopes, ind.against) -
-             value_or_nan(pt.monitor_slopes, ind.monitor) *
-                 value_or_nan(pt.monitor_curvatures, ind.against);
     default:
       return std::numeric_limits<double>::quiet_NaN();
   }
@@ -50,35 +48,14 @@ bool is_discrete(EventType type) {
   return type == EventType::kSignatureChange || type == EventType::kBifurcation;
 }
 
+bool is_feature(EventType type) {
+  return type == EventType::kInflection || type == EventType::kSlopeMax;
+}
+
 // The discrete indicator's class at a point, as a vector compared for equality.
 std::vector<int> discrete_value(const Indicator& ind, const Point& pt) {
   if (ind.type == EventType::kSignatureChange) return pt.signature;
   return {pt.jacobian_sign * sign(pt.tangent_p)};
-}
-
-// Bisection for the first change of a discrete indicator on (0, sigma_b).
-double locate_change(const Indicator& ind, const TangentPoint& a, const TangentPoint& b,
-                     double sigma_b, const SegmentSolver& solve, const Settings& settings,
-                     TangentPoint& out, bool& located) {
-  const std::vector<int> start = discrete_value(ind, a.point);
-  double lo = 0.0;
-  double hi = sigma_b;
-  out = b;
-  located = false;
-  for (int it = 0; it < settings.event_max_iterations; ++it) {
-    if (hi - lo <= settings.event_tolerance) break;
-    const double mid = 0.5 * (lo + hi);
-    TangentPoint trial;
-    if (!solve(mid, trial)) return hi - lo;
-    if (discrete_value(ind, trial.point) == start) {
-      lo = mid;
-    } else {
-      hi = mid;
-      out = trial;
-    }
-  }
-  located = hi - lo <= settings.event_tolerance;
-  return hi - lo;
 }
 
 bool changes(const Indicator& ind, const Point& a, const Point& b) {
@@ -98,6 +75,30 @@ EventType resolved_type(const Indicator& ind, const Point& a) {
   return continuous_value(ind, a) > 0.0 ? EventType::kMonitorMax : EventType::kMonitorMin;
 }
 
+// The simple indicators (limit points, extrema, zeros, signature, bifurcation): one event per
+// sign change, located on the whole step.
+std::vector<Event> simple_events(const Indicator& ind, const std::vector<std::string>& names,
+                                 const SegmentPoint& a, const SegmentPoint& b,
+                                 const SegmentSolver& solve, const Settings& settings) {
+  if (!changes(ind, a.point.point, b.point.point)) return {};
+  TangentPoint at = b.point;
+  bool located = false;
+  double accuracy = b.sigma;
+  if (is_discrete(ind.type)) {
+    if (ind.type != EventType::kSignatureChange || settings.locate_signature_changes) {
+      const auto value = [&ind](const TangentPoint& tp) { return discrete_value(ind, tp.point); };
+      accuracy = locate_change(value, a, b, solve, settings, at, located);
+    }
+  } else {
+    const auto g = [&ind](const TangentPoint& tp) { return continuous_value(ind, tp.point); };
+    accuracy = locate_root(g, a, b, solve, settings, at, located);
+  }
+  Event event = event_at(resolved_type(ind, a.point.point), ind, names, at);
+  event.located = located;
+  event.accuracy = accuracy;
+  return {event};
+}
+
 }  // namespace
 
 std::vector<Indicator> make_indicators(const Settings& settings,
@@ -113,94 +114,82 @@ std::vector<Indicator> make_indicators(const Settings& settings,
   for (const auto& pair : settings.inflections)
     out.push_back({EventType::kInflection, find_monitor(monitor_names, pair.monitor, "inflections"),
                    find_monitor(monitor_names, pair.against, "inflections")});
+  for (const auto& name : settings.slope_extremum_monitors)
+    out.push_back(
+        {EventType::kSlopeMax, find_monitor(monitor_names, name, "slope_extremum_monitors"), -1});
   if (settings.detect_signature_changes) out.push_back({EventType::kSignatureChange, -1, -1});
   if (settings.detect_bifurcations) out.push_back({EventType::kBifurcation, -1, -1});
+  if (settings.stability_modes > 0) out.push_back({EventType::kStabilityChange, -1, -1});
   return out;
 }
 
-AnalysisNeeds analysis_needs(const std::vector<Indicator>& indicators) {
+AnalysisNeeds analysis_needs(const std::vector<Indicator>& indicators, const Settings& settings) {
   AnalysisNeeds needs;
   for (const auto& ind : indicators) {
-    needs.slopes |= ind.type == EventType::kMonitorMax || ind.type == EventType::kInflection;
-    needs.curvatures |= ind.type == EventType::kInflection;
-    needs.signature |= ind.type == EventType::kSignatureChange;
+    needs.slopes |= ind.type == EventType::kMonitorMax || is_feature(ind.type);
+    needs.curvatures |= is_feature(ind.type);
+    needs.curvature_errors |= is_feature(ind.type);
+    // The feature detector refuses sign changes across a signature change.
+    needs.signature |= ind.type == EventType::kSignatureChange || is_feature(ind.type);
   }
+  needs.stability_modes = settings.stability_modes;
   return needs;
 }
 
-double locate_root(const std::function<double(const TangentPoint&)>& g, const TangentPoint& a,
-                   const TangentPoint& b, double sigma_b, const SegmentSolver& solve,
-                   const Settings& settings, TangentPoint& out, bool& located) {
-  struct End {
-    double sigma;
-    double g;       // true value
-    double weight;  // Illinois: the stale end's value is halved
-    TangentPoint point;
-  };
-  End lo{0.0, g(a), g(a), a};
-  End hi{sigma_b, g(b), g(b), b};
-  int last_replaced = 0;  // +1: lo, -1: hi (Illinois halves the end kept twice)
-  double width_before = sigma_b;
-  for (int it = 0; it < settings.event_max_iterations; ++it) {
-    const double width = hi.sigma - lo.sigma;
-    if (width <= settings.event_tolerance || lo.g == 0.0 || hi.g == 0.0) break;
-    // Regula falsi, with a bisection every third iteration that failed to halve the bracket.
-    double sigma = lo.sigma - lo.weight * width / (hi.weight - lo.weight);
-    if (it % 3 == 2) {
-      if (width > 0.5 * width_before) sigma = 0.5 * (lo.sigma + hi.sigma);
-      width_before = width;
-    }
-    if (!(sigma > lo.sigma && sigma < hi.sigma)) sigma = 0.5 * (lo.sigma + hi.sigma);
-    TangentPoint trial;
-    if (!solve(sigma, trial)) break;
-    const double value = g(trial);
-    if (std::isnan(value)) break;
-    if (sign(value) == sign(lo.g)) {
-      lo = {sigma, value, value, trial};
-      if (last_replaced == 1) hi.weight *= 0.5;
-      last_replaced = 1;
-    } else {
-      hi = {sigma, value, value, trial};
-      if (last_replaced == -1) lo.weight *= 0.5;
-      last_replaced = -1;
-    }
+void CurveScales::include(const Point& point) {
+  if (empty || low.size() != point.monitors.size()) {
+    low = high = point.monitors;
+    p_low = p_high = point.p;
+    empty = false;
+    return;
   }
-  const double width = (lo.g == 0.0 || hi.g == 0.0) ? 0.0 : hi.sigma - lo.sigma;
-  located = width <= settings.event_tolerance;
-  out = (std::abs(lo.g) < std::abs(hi.g)) ? lo.point : hi.point;
-  return width;
+  low = low.cwiseMin(point.monitors);
+  high = high.cwiseMax(point.monitors);
+  p_low = std::min(p_low, point.p);
+  p_high = std::max(p_high, point.p);
+}
+
+double CurveScales::monitor_range(int i) const {
+  return (empty || i < 0 || i >= low.size()) ? 0.0 : high(i) - low(i);
+}
+
+Event event_at(EventType type, const Indicator& indicator,
+               const std::vector<std::string>& monitor_names, const TangentPoint& at) {
+  Event event;
+  event.type = type;
+  event.name = event_type_name(type);
+  if (indicator.monitor >= 0) event.monitor = monitor_names[indicator.monitor];
+  if (indicator.against >= 0) event.against = monitor_names[indicator.against];
+  event.p = at.point.p;
+  event.x = at.point.x;
+  event.monitors = at.point.monitors;
+  event.branch_id = at.point.branch_id;
+  return event;
 }
 
 std::vector<Event> find_events(const std::vector<Indicator>& indicators,
                                const std::vector<std::string>& monitor_names, const TangentPoint& a,
                                const TangentPoint& b, double sigma_b, const SegmentSolver& solve,
-                               const Settings& settings, int step, BorderedSolver& metric) {
+                               const Settings& settings, int step, BorderedSolver& metric,
+                               const CurveScales& scales) {
+  const SegmentPoint start{0.0, a};
+  const SegmentPoint end{sigma_b, b};
   std::vector<Event> events;
   for (const auto& ind : indicators) {
-    if (!changes(ind, a.point, b.point)) continue;
-    Event event;
-    event.type = resolved_type(ind, a.point);
-    event.name = event_type_name(event.type);
-    if (ind.monitor >= 0) event.monitor = monitor_names[ind.monitor];
-    if (ind.against >= 0) event.against = monitor_names[ind.against];
-    TangentPoint at = b;
-    if (is_discrete(ind.type)) {
-      const bool locate =
-          ind.type != EventType::kSignatureChange || settings.locate_signature_changes;
-      event.accuracy =
-          locate ? locate_change(ind, a, b, sigma_b, solve, settings, at, event.located) : sigma_b;
-    } else {
-      const auto g = [&ind](const TangentPoint& tp) { return continuous_value(ind, tp.point); };
-      event.accuracy = locate_root(g, a, b, sigma_b, solve, settings, at, event.located);
+    std::vector<Event> found;
+    if (ind.type == EventType::kStabilityChange)
+      found = stability_events(ind, start, end, solve, settings);
+    else if (is_feature(ind.type))
+      found = feature_events(ind, monitor_names, start, end, solve, settings, scales);
+    else
+      found = simple_events(ind, monitor_names, start, end, solve, settings);
+    for (auto& event : found) {
+      event.step = step;
+      const Vector dx = event.x - a.point.x;
+      const double dp = event.p - a.point.p;
+      event.arclength = a.point.arclength + std::sqrt(metric.inner(dx, dp, dx, dp));
+      events.push_back(std::move(event));
     }
-    event.p = at.point.p;
-    event.x = at.point.x;
-    event.monitors = at.point.monitors;
-    event.step = step;
-    const Vector dx = at.point.x - a.point.x;
-    const double dp = at.point.p - a.point.p;
-    event.arclength = a.point.arclength + std::sqrt(metric.inner(dx, dp, dx, dp));
-    events.push_back(std::move(event));
   }
   std::stable_sort(events.begin(), events.end(),
                    [](const Event& l, const Event& r) { return l.arclength < r.arclength; });

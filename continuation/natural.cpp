@@ -101,7 +101,9 @@ Branch natural(Problem& problem, Vector x0, double p0, const Settings& settings,
   settings.validate();
   NaturalStepper stepper(problem, settings, p0);
   BorderedSolver bordered(problem, settings.parameter_weight);
-  return trace(problem, stepper, bordered, x0, p0, settings, callback, std::nullopt);
+  return trace(problem, stepper, bordered,
+               {x0, p0, Vector(), static_cast<double>(settings.direction), 0}, settings, callback,
+               std::nullopt);
 }
 
 Branch natural(Problem& problem, const Checkpoint& resume, const Settings& settings,
@@ -111,7 +113,7 @@ Branch natural(Problem& problem, const Checkpoint& resume, const Settings& setti
       resume.branch.points.empty() ? resume.state.current.point.p : resume.branch.points.front().p;
   NaturalStepper stepper(problem, settings, p0);
   BorderedSolver bordered(problem, settings.parameter_weight);
-  return trace(problem, stepper, bordered, Vector(), 0.0, settings, callback, resume);
+  return trace(problem, stepper, bordered, Start{}, settings, callback, resume);
 }
 
 }  // namespace si::cont

@@ -35,6 +35,14 @@ int Problem::jacobian_sign() {
   return 0;
 }
 
+bool Problem::provides_stability() const {
+  return false;
+}
+
+bool Problem::stability(const Vector& /*x*/, double /*p*/, int /*modes*/, Stability& /*out*/) {
+  return false;
+}
+
 bool Problem::adapt(Vector& /*x*/, double /*p*/) {
   return false;
 }

@@ -8,11 +8,10 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
+#include "continuation/linear_algebra.hpp"
+#include "continuation/stability.hpp"
 
 namespace si::cont {
-
-using Vector = Eigen::VectorXd;
 
 class Problem {
  public:
@@ -52,6 +51,17 @@ class Problem {
   // Sign of det(dF/dx) from the last factorize() (+1/-1), 0 = unknown (the default). Used only
   // by the optional bifurcation indicator.
   virtual int jacobian_sign();
+
+  // Stability of the converged point (x, p), optional (docs/theory/continuation.md, "Stability"):
+  // the number of negative eigenvalues of the symmetric tangent restricted to the problem's
+  // constraints and its lowest `modes` eigenpairs, the modes in x. A problem builds it from its
+  // matrices with analyse_stability() (stability_analysis.hpp). Called only when a run asks for
+  // stability (Settings::stability_modes > 0), after factorize(x, p); it must leave that
+  // factorization usable. false = cannot be computed here (recoverable, like factorize()).
+  // provides_stability() says whether stability() is implemented (default false; a run asking
+  // for stability of a problem without it is refused).
+  virtual bool provides_stability() const;
+  virtual bool stability(const Vector& x, double p, int modes, Stability& out);
 
   // Called after each accepted point. The problem may change its size (e.g. grow a contact
   // candidate set) and map x to the new size in place; return true if it did (the library then

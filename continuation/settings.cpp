@@ -106,6 +106,13 @@ void Settings::validate() const {
   require_positive(c, "event_tolerance", event_tolerance);
   require_field(event_max_iterations >= 1, c, "event_max_iterations", event_max_iterations,
                 "must be >= 1");
+  require_positive(c, "feature_noise_factor", feature_noise_factor);
+  require_field(std::isfinite(feature_curvature_tolerance) && feature_curvature_tolerance >= 0.0, c,
+                "feature_curvature_tolerance", feature_curvature_tolerance,
+                "must be >= 0 and finite");
+  require_field(feature_refinement >= 1, c, "feature_refinement", feature_refinement,
+                "must be >= 1");
+  require_field(stability_modes >= 0, c, "stability_modes", stability_modes, "must be >= 0");
   for (const auto& pair : inflections)
     require(!pair.monitor.empty() && !pair.against.empty() && pair.monitor != pair.against,
             c + ".inflections: pair ('" + pair.monitor + "', '" + pair.against +

@@ -88,6 +88,26 @@ struct Settings {
   double event_tolerance = 1e-8;
   int event_max_iterations = 80;
 
+  // Extrema of dm/dp along the branch, the inflections of m against the parameter (slope_max,
+  // slope_min events): for a force monitor, slope_min is the minimum tangent stiffness.
+  std::vector<std::string> slope_extremum_monitors;
+  // The curve-feature detector (inflections and slope extrema; docs/theory/continuation.md,
+  // "Curve features"): a point's indicator g has a sign only when |g| exceeds noise_factor times
+  // its error estimate and the curvature of the curve in its own scale (each coordinate divided
+  // by its range over the branch so far) exceeds curvature_tolerance; a sign change between two
+  // such points is confirmed on `refinement` sub-intervals of the step, each re-solved, and
+  // reported only inside a sub-interval without a signature change.
+  double feature_noise_factor = 4.0;
+  double feature_curvature_tolerance = 1e-3;
+  int feature_refinement = 4;
+
+  // Stability (Problem::stability) at every point: the number of lowest eigenpairs computed,
+  // 0 = off (nothing computed, no cost). A change of the number of negative eigenvalues between
+  // two points is a stability_change event, located on the eigenvalue that crosses zero (or by
+  // bisection on the count when fewer eigenpairs are computed than the count reaches).
+  int stability_modes = 0;
+  bool locate_stability_changes = true;
+
   // Checkpoints (checkpoint.hpp): written atomically every checkpoint_interval accepted steps
   // and at the end of the run; empty path = none.
   std::string checkpoint_path;

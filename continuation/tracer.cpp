@@ -32,16 +32,23 @@ class Tracer {
         callback_(callback) {
     branch_.monitor_names = problem.monitor_names();
     indicators_ = make_indicators(settings, branch_.monitor_names);
-    needs_ = analysis_needs(indicators_);
+    needs_ = analysis_needs(indicators_, settings);
+    if (settings.stability_modes > 0 && !problem.provides_stability())
+      throw std::invalid_argument(
+          "continuation.stability_modes = " + std::to_string(settings.stability_modes) +
+          " but the problem does not provide stability()");
   }
 
-  Branch run(const Vector& x0, double p0) {
+  Branch run(const Start& from) {
+    const Vector& x0 = from.x;
+    const double p0 = from.p;
     if (x0.size() != problem_.size())
       throw std::invalid_argument("continuation: x0 has size " + std::to_string(x0.size()) +
                                   " but the problem has size " + std::to_string(problem_.size()));
     if (!(p0 >= settings_.p_min && p0 <= settings_.p_max))
       throw std::invalid_argument("continuation: p0 = " + fmt(p0) + " is outside [p_min, p_max]");
-    if (start(x0, p0) && after_accept()) loop();
+    branch_id_ = from.branch_id;
+    if (start(from) && after_accept()) loop();
     return branch_;
   }
 
@@ -59,6 +66,8 @@ class Tracer {
           "continuation: the checkpoint's monitors differ from the problem's");
     branch_ = checkpoint.branch;
     state_ = checkpoint.state;
+    branch_id_ = state_.current.point.branch_id;
+    for (const auto& point : branch_.points) scales_.include(point);
     const Status s = branch_.status;
     if (s == Status::kCompleted || s == Status::kReachedBound || s == Status::kStartFailed)
       return branch_;
@@ -78,18 +87,24 @@ class Tracer {
   }
 
   bool analyse(const Vector& x, double p, const Vector& ref_x, double ref_p, TangentPoint& out) {
-    return analyse_point(problem_, bordered_, x, p, ref_x, ref_p, needs_, out);
+    if (!analyse_point(problem_, bordered_, x, p, ref_x, ref_p, needs_, out)) return false;
+    out.point.branch_id = branch_id_;
+    return true;
   }
 
-  bool start(const Vector& x0, double p0) {
-    Vector x = x0;
-    const NewtonResult r = solve_at(problem_, x, p0, settings_.newton);
+  bool start(const Start& from) {
+    Vector x = from.x;
+    const NewtonResult r = solve_at(problem_, x, from.p, settings_.newton);
     if (!r.converged) return finish(Status::kStartFailed, "the start point: " + r.reason);
-    if (!analyse(x, p0, Vector(), settings_.direction, state_.current))
-      return finish(Status::kStartFailed, "the Jacobian cannot be factored at the start point");
+    if (!analyse(x, from.p, from.ref_x, from.ref_p, state_.current))
+      return finish(Status::kStartFailed,
+                    settings_.stability_modes > 0
+                        ? "the Jacobian or the stability analysis fails at the start point"
+                        : "the Jacobian cannot be factored at the start point");
     state_.current.point.newton_iterations = r.iterations;
     state_.step = settings_.step_initial;
     branch_.points.push_back(state_.current.point);
+    scales_.include(state_.current.point);
     return true;
   }
 
@@ -173,8 +188,8 @@ class Tracer {
     const TangentPoint& a = state_.current;
     TangentPoint at;
     bool located = false;
-    locate_root([bound](const TangentPoint& tp) { return tp.point.p - bound; }, a, b,
-                step.sigma_end, segment(step), settings_, at, located);
+    locate_root([bound](const TangentPoint& tp) { return tp.point.p - bound; }, {0.0, a},
+                {step.sigma_end, b}, segment(step), settings_, at, located);
     Vector x = at.point.x;
     if (solve_at(problem_, x, bound, settings_.newton).converged &&
         analyse(x, bound, a.tangent_x, a.point.tangent_p, b)) {
@@ -192,8 +207,9 @@ class Tracer {
     b.point.step = step.sigma_end;
     b.point.arclength = a.point.arclength + chord(a.point, b.point);
     const int index = steps() + 1;
+    scales_.include(b.point);
     const auto events = find_events(indicators_, branch_.monitor_names, a, b, step.sigma_end,
-                                    segment(step), settings_, index, bordered_);
+                                    segment(step), settings_, index, bordered_, scales_);
     branch_.points.push_back(b.point);
     branch_.events.insert(branch_.events.end(), events.begin(), events.end());
     state_.has_previous = true;
@@ -242,6 +258,7 @@ class Tracer {
     state_.current.point.arclength = old.arclength;
     state_.has_previous = false;
     if (!branch_.points.empty()) branch_.points.back() = state_.current.point;
+    scales_.include(state_.current.point);
     return true;
   }
 
@@ -264,18 +281,20 @@ class Tracer {
   const Callback& callback_;
   std::vector<Indicator> indicators_;
   AnalysisNeeds needs_;
+  int branch_id_ = 0;
+  CurveScales scales_;  // the monitors' and p's extent over the accepted points
   Branch branch_;
   State state_;
 };
 
 }  // namespace
 
-Branch trace(Problem& problem, Stepper& stepper, BorderedSolver& bordered, const Vector& x0,
-             double p0, const Settings& settings, const Callback& callback,
+Branch trace(Problem& problem, Stepper& stepper, BorderedSolver& bordered, const Start& start,
+             const Settings& settings, const Callback& callback,
              const std::optional<Checkpoint>& resume) {
   settings.validate();
   Tracer tracer(problem, stepper, bordered, settings, callback);
-  return resume ? tracer.resume(*resume) : tracer.run(x0, p0);
+  return resume ? tracer.resume(*resume) : tracer.run(start);
 }
 
 }  // namespace si::cont

@@ -44,9 +44,20 @@ class Stepper {
                                 double& p) = 0;
 };
 
+// Where a fresh run starts: the point (solved at p first), the reference that orients its first
+// tangent (ref_x empty: by the sign of ref_p, i.e. Settings::direction) and the branch id its
+// points carry.
+struct Start {
+  Vector x;
+  double p = 0.0;
+  Vector ref_x;
+  double ref_p = 1.0;
+  int branch_id = 0;
+};
+
 // Runs from a fresh start (resume empty) or from a checkpoint.
-Branch trace(Problem& problem, Stepper& stepper, BorderedSolver& bordered, const Vector& x0,
-             double p0, const Settings& settings, const Callback& callback,
+Branch trace(Problem& problem, Stepper& stepper, BorderedSolver& bordered, const Start& start,
+             const Settings& settings, const Callback& callback,
              const std::optional<Checkpoint>& resume);
 
 }  // namespace si::cont

@@ -13,7 +13,7 @@ shift || true
 PACKAGES=(
   cmake ninja-build g++ pkg-config clang-format
   libsundials-dev libeigen3-dev libsuitesparse-dev libopenblas0-pthread
-  libnlopt-cxx-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
+  libnlopt-cxx-dev libspectra-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
 )

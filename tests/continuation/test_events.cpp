@@ -15,7 +15,10 @@ namespace si::cont {
 namespace {
 
 // Monitors of the cubic branch plus q = p^3 + p, a nonlinear monotone abscissa: d2y/dq2 =
-// 24 p / (3p^2 + 1)^3, so y(q) also has its inflection at p = 0.
+// 24 p / (3p^2 + 1)^3, so y(q) also has its inflection at p = 0. The signature is that of y + 1,
+// which changes where p^3 - 3p = -1, i.e. p = 2 cos(theta), cos(3 theta) = -1/2: p = 2 cos(8 pi/9),
+// 2 cos(4 pi/9), 2 cos(2 pi/9); not at y's own zero p = 0, where the inflection is (the
+// curve-feature detector never reports a feature across a signature change: a kink there).
 class CubicWithAbscissa final : public Problem {
  public:
   int size() const override { return cubic_.size(); }
@@ -24,7 +27,7 @@ class CubicWithAbscissa final : public Problem {
   bool solve(Vector& b) override { return cubic_.solve(b); }
   std::vector<std::string> monitor_names() const override { return {"y", "p", "q"}; }
   Vector monitors(const Vector& x, double p) override { return Vector{{x(0), p, p * p * p + p}}; }
-  std::vector<int> signature(const Vector& x, double p) override { return cubic_.signature(x, p); }
+  std::vector<int> signature(const Vector& x, double /*p*/) override { return {x(0) > -1.0}; }
 
  private:
   test::CubicBranchProblem cubic_;
@@ -101,10 +104,13 @@ void expect_cubic_events(const Branch& branch) {
                                            e.p, kCurvatureRootTol, "exact");
   }
 
-  // The signature (sign of y) changes at the three zeros, located by bisection.
+  // The signature (sign of y + 1) changes at three points, located by bisection.
   const auto changes = test::events_of(branch, EventType::kSignatureChange);
   ASSERT_EQ(changes.size(), 3u);
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(changes[i].p, expected_zeros[i], 1e-8);
+  const double pi = std::acos(-1.0);
+  const double expected_changes[] = {2.0 * std::cos(8.0 * pi / 9.0), 2.0 * std::cos(4.0 * pi / 9.0),
+                                     2.0 * std::cos(2.0 * pi / 9.0)};
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(changes[i].p, expected_changes[i], 1e-8);
 
   // Events are ordered along the branch and tagged with the step that contains them.
   for (std::size_t i = 1; i < branch.events.size(); ++i)
@@ -147,7 +153,7 @@ TEST(ContEvents, SignatureChangeUnlocatedWhenNotAsked) {
   s.inflections.clear();
   const Branch branch = natural(problem, Vector::Constant(1, 0.0), 0.0 - 0.3, s);
   const auto changes = test::events_of(branch, EventType::kSignatureChange);
-  ASSERT_EQ(changes.size(), 2u);  // at 0 and sqrt(3)
+  ASSERT_EQ(changes.size(), 2u);  // at 2 cos(4 pi/9) and 2 cos(2 pi/9)
   EXPECT_FALSE(changes[0].located);
   EXPECT_EQ(changes[0].p, branch.points[changes[0].step].p);  // reported at the later point
 }

@@ -57,6 +57,17 @@ TEST(ContSettings, RejectsBadBoundsAndCounts) {
   expect_rejected([](Settings& s) { s.checkpoint_interval = 5; }, "needs a checkpoint_path");
 }
 
+TEST(ContSettings, RejectsBadStabilityAndFeatureSettings) {
+  expect_rejected([](Settings& s) { s.stability_modes = -1; },
+                  "continuation.stability_modes = -1 must be >= 0");
+  expect_rejected([](Settings& s) { s.feature_refinement = 0; },
+                  "continuation.feature_refinement = 0 must be >= 1");
+  expect_rejected([](Settings& s) { s.feature_noise_factor = 0; },
+                  "continuation.feature_noise_factor = 0 must be positive");
+  expect_rejected([](Settings& s) { s.feature_curvature_tolerance = -1e-3; },
+                  "continuation.feature_curvature_tolerance = -0.001 must be >= 0");
+}
+
 TEST(ContSettings, RejectsBadNewtonSettings) {
   expect_rejected([](Settings& s) { s.newton.relative_tolerance = 0; },
                   "continuation.newton.relative_tolerance = 0");

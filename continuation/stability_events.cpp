@@ -1,0 +1,70 @@
+#include "continuation/stability_events.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace si::cont {
+namespace {
+
+// The j-th lowest eigenvalue (1-based) at a point, NaN if not computed.
+double eigenvalue(const Point& pt, int j) {
+  return j >= 1 && j <= pt.eigenvalues.size() ? pt.eigenvalues(j - 1)
+                                              : std::numeric_limits<double>::quiet_NaN();
+}
+
+bool opposite_signs(double u, double v) {
+  return (u > 0.0 && v < 0.0) || (u < 0.0 && v > 0.0);
+}
+
+Criticality classify(double at, double a, double b) {
+  return std::abs(at) <= kFoldRatio * std::max(std::abs(a), std::abs(b))
+             ? Criticality::kLimitPoint
+             : Criticality::kBifurcation;
+}
+
+}  // namespace
+
+std::vector<Event> stability_events(const Indicator& indicator, const SegmentPoint& a,
+                                    const SegmentPoint& b, const SegmentSolver& solve,
+                                    const Settings& settings) {
+  const Point& pa = a.point.point;
+  const Point& pb = b.point.point;
+  const int na = pa.negative_eigenvalues;
+  const int nb = pb.negative_eigenvalues;
+  if (na < 0 || nb < 0 || na == nb) return {};
+  const bool rising = nb > na;
+  std::vector<Event> events;
+  for (int j = std::min(na, nb) + 1; j <= std::max(na, nb); ++j) {
+    TangentPoint at = b.point;
+    bool located = false;
+    double accuracy = b.sigma - a.sigma;
+    if (settings.locate_stability_changes) {
+      if (opposite_signs(eigenvalue(pa, j), eigenvalue(pb, j))) {
+        const auto g = [j](const TangentPoint& tp) { return eigenvalue(tp.point, j); };
+        accuracy = locate_root(g, a, b, solve, settings, at, located);
+      } else {
+        // The count crosses j - 1 | j here: bisection on "at least j negative".
+        const auto value = [j](const TangentPoint& tp) {
+          return std::vector<int>{tp.point.negative_eigenvalues >= j ? 1 : 0};
+        };
+        accuracy = locate_change(value, a, b, solve, settings, at, located);
+      }
+    }
+    Event event = event_at(EventType::kStabilityChange, indicator, {}, at);
+    event.located = located;
+    event.accuracy = accuracy;
+    event.criticality = classify(at.point.tangent_p, pa.tangent_p, pb.tangent_p);
+    event.negative_before = rising ? j - 1 : j;
+    event.negative_after = rising ? j : j - 1;
+    event.eigenvalue = eigenvalue(at.point, j);
+    if (j <= static_cast<int>(at.modes.size()))
+      event.mode = at.modes[static_cast<std::size_t>(j - 1)];
+    event.tangent_x = at.tangent_x;
+    event.tangent_p = at.point.tangent_p;
+    events.push_back(std::move(event));
+  }
+  return events;
+}
+
+}  // namespace si::cont
