@@ -157,6 +157,37 @@ void check_same_case(const nlohmann::json& record, const CaseDigest& now, const 
       text);
 }
 
+// The result files of output.formats (docs/results.md); returns what was written, for the
+// "wrote ..." line.
+std::vector<std::string> write_path_files(const std::filesystem::path& dir,
+                                          const OutputChoice& formats,
+                                          const IndentationSetup& setup, const PathResult& r,
+                                          const std::vector<std::pair<double, std::string>>& vtus) {
+  const PathSpec& path = setup.case_file.path;
+  std::vector<std::string> written;
+  const bool arclength = r.method == "pseudo_arclength";
+  if (formats.csv) {
+    write_file_atomically((dir / "path.csv").string(), path_csv(r));
+    written.push_back((dir / "path.csv").string());
+    if (arclength) {
+      write_file_atomically((dir / "path_grid.csv").string(),
+                            path_grid_csv(r, path.step, path.depth_max));
+      written.push_back("path_grid.csv (interpolated at the depth steps)");
+    }
+  }
+  if (formats.json) {
+    write_file_atomically((dir / "path.json").string(), path_json(setup, r).dump(2) + "\n");
+    write_file_atomically((dir / "events.json").string(), events_json(r).dump(2) + "\n");
+    written.push_back((written.empty() ? (dir / "path.json").string() : "path.json") +
+                      ", events.json");
+  }
+  if (!vtus.empty()) {
+    write_file_atomically((dir / "path.pvd").string(), pvd_text(vtus));
+    written.push_back("path.pvd and " + std::to_string(vtus.size()) + " VTU files");
+  }
+  return written;
+}
+
 }  // namespace
 
 std::string default_case_yaml() {
@@ -261,27 +292,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
       out << "event: " << e.name << (e.monitor.empty() ? "" : " of " + e.monitor)
           << (e.against.empty() ? "" : " against " + e.against) << " at depth " << e.p << " mm\n";
 
-  std::vector<std::string> written;
-  const bool arclength = r.method == "pseudo_arclength";
-  if (formats.csv) {
-    write_file_atomically((dir / "path.csv").string(), path_csv(r));
-    written.push_back((dir / "path.csv").string());
-    if (arclength) {
-      write_file_atomically((dir / "path_grid.csv").string(),
-                            path_grid_csv(r, cf.path.step, cf.path.depth_max));
-      written.push_back("path_grid.csv (interpolated at the depth steps)");
-    }
-  }
-  if (formats.json) {
-    write_file_atomically((dir / "path.json").string(), path_json(setup, r).dump(2) + "\n");
-    write_file_atomically((dir / "events.json").string(), events_json(r).dump(2) + "\n");
-    written.push_back((written.empty() ? (dir / "path.json").string() : "path.json") +
-                      ", events.json");
-  }
-  if (!vtus.empty()) {
-    write_file_atomically((dir / "path.pvd").string(), pvd_text(vtus));
-    written.push_back("path.pvd and " + std::to_string(vtus.size()) + " VTU files");
-  }
+  const std::vector<std::string> written = write_path_files(dir, formats, setup, r, vtus);
   err << "wrote ";
   for (std::size_t i = 0; i < written.size(); ++i) err << (i ? ", " : "") << written[i];
   err << (written.empty() ? "nothing (output.formats)" : "") << "\n";
