@@ -228,11 +228,12 @@ State to_state(const json& j) {
 }  // namespace
 
 void save_checkpoint(const std::string& path, const Checkpoint& checkpoint, bool points_x) {
-  const json j = {{"format", kFormat},
-                  {"version", kVersion},
-                  {"method", method_name(checkpoint.method)},
-                  {"branch", branch_json(checkpoint.branch, points_x)},
-                  {"state", state_json(checkpoint.state)}};
+  json j = {{"format", kFormat},
+            {"version", kVersion},
+            {"method", method_name(checkpoint.method)},
+            {"branch", branch_json(checkpoint.branch, points_x)},
+            {"state", state_json(checkpoint.state)}};
+  if (!checkpoint.attachment.is_null()) j["attachment"] = checkpoint.attachment;
   const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp, std::ios::trunc);
@@ -256,6 +257,7 @@ Checkpoint load_checkpoint(const std::string& path) {
     c.method = parse_method(j.at("method").get<std::string>());
     c.branch = to_branch(j.at("branch"));
     c.state = to_state(j.at("state"));
+    if (j.contains("attachment")) c.attachment = j.at("attachment");
     return c;
   } catch (const std::exception& e) {
     throw std::runtime_error("checkpoint '" + path + "': " + e.what());

@@ -4,6 +4,7 @@
 // before resuming; the library checks only that the sizes agree.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "continuation/settings.hpp"
@@ -15,6 +16,8 @@ struct Checkpoint {
   Method method = Method::kPseudoArclength;
   Branch branch;
   State state;
+  // Settings::checkpoint_attachment's value when it was written; null when there was none.
+  nlohmann::json attachment;
 };
 
 // Writes `path` atomically: to "<path>.tmp" first, then renamed over `path`, so a run killed

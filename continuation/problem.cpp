@@ -47,4 +47,6 @@ bool Problem::adapt(Vector& /*x*/, double /*p*/) {
   return false;
 }
 
+void Problem::reset_solver_caches() {}
+
 }  // namespace si::cont

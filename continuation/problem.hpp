@@ -67,6 +67,12 @@ class Problem {
   // candidate set) and map x to the new size in place; return true if it did (the library then
   // recomputes the tangent at that point, the previous secant/tangent being invalid).
   virtual bool adapt(Vector& x, double p);
+
+  // Called after each periodic checkpoint, and before a resumed run goes on. A problem that
+  // carries solver state from one linearisation to the next (e.g. a preconditioner reused while
+  // it works) drops it here: a run resumed from the checkpoint starts without it, and from
+  // that point on both take the same steps bit for bit. Default: nothing to drop.
+  virtual void reset_solver_caches();
 };
 
 }  // namespace si::cont

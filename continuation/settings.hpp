@@ -4,7 +4,9 @@
 // Meaning of every field: docs/theory/continuation.md.
 #pragma once
 
+#include <functional>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -109,9 +111,15 @@ struct Settings {
   bool locate_stability_changes = true;
 
   // Checkpoints (checkpoint.hpp): written atomically every checkpoint_interval accepted steps
-  // and at the end of the run; empty path = none.
+  // (after the callback has seen the point) and when the run ends, except when the callback
+  // stopped it: a stopped run keeps its last periodic checkpoint, from which a resume repeats
+  // the points after it bit for bit (see Problem::reset_solver_caches). Empty path = none.
   std::string checkpoint_path;
   int checkpoint_interval = 0;
+  // The caller's own record of the run (e.g. the quantities it derived from each point), saved
+  // in the same file by the same atomic write, so that the two can never be out of step;
+  // returned as Checkpoint::attachment. Empty: none.
+  std::function<nlohmann::json()> checkpoint_attachment;
   // false: the checkpoint keeps x only for the current and previous state, not for every point
   // and event (a resumed branch then has empty x before the checkpoint and in the events found
   // before it). For large problems, where every point's and event's x would make each checkpoint

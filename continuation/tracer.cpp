@@ -68,6 +68,7 @@ class Tracer {
     state_ = checkpoint.state;
     branch_id_ = state_.current.point.branch_id;
     for (const auto& point : branch_.points) scales_.include(point);
+    problem_.reset_solver_caches();  // as the run that wrote the checkpoint did after it
     const Status s = branch_.status;
     if (s == Status::kCompleted || s == Status::kReachedBound || s == Status::kStartFailed)
       return branch_;
@@ -224,13 +225,19 @@ class Tracer {
     state_.step = std::clamp(base * factor, settings_.step_min, settings_.step_max);
   }
 
-  // Adaptation, checkpoint and callback after an accepted point. false = the run ends.
+  // Adaptation, callback and checkpoint after an accepted point. false = the run ends. The
+  // callback comes first so that the caller's record (Settings::checkpoint_attachment) holds
+  // the point; the solver caches are dropped after each checkpoint so that the run goes on as
+  // one resumed from it would (Problem::reset_solver_caches).
   bool after_accept() {
     if (!adapt()) return false;
-    const int n = steps();
-    if (settings_.checkpoint_interval > 0 && n % settings_.checkpoint_interval == 0) save_state();
     if (callback_ && !callback_(branch_.points.back(), branch_))
       return finish(Status::kStoppedByCallback, "stopped by the callback");
+    const int n = steps();
+    if (settings_.checkpoint_interval > 0 && n % settings_.checkpoint_interval == 0) {
+      save_state();
+      problem_.reset_solver_caches();
+    }
     return true;
   }
 
@@ -262,15 +269,20 @@ class Tracer {
     return true;
   }
 
+  // A run stopped by its callback keeps its last periodic checkpoint (see Settings): one
+  // written here would resume with cold solver caches where this run had warm ones.
   bool finish(Status status, const std::string& reason) {
     branch_.status = status;
     branch_.reason = reason;
-    if (!settings_.checkpoint_path.empty() && status != Status::kStartFailed) save_state();
+    const bool keep_last = status == Status::kStartFailed || status == Status::kStoppedByCallback;
+    if (!settings_.checkpoint_path.empty() && !keep_last) save_state();
     return false;
   }
 
   void save_state() const {
-    save_checkpoint(settings_.checkpoint_path, {stepper_.method(), branch_, state_},
+    const nlohmann::json attachment =
+        settings_.checkpoint_attachment ? settings_.checkpoint_attachment() : nlohmann::json();
+    save_checkpoint(settings_.checkpoint_path, {stepper_.method(), branch_, state_, attachment},
                     settings_.checkpoint_keeps_x);
   }
 

@@ -1,5 +1,5 @@
 """The source paper's published numbers that studies/paper_layups.py compares against
-(../shared/seed: "Modeling of static indentation on laminated composite shells"). Units and the
+("Modeling of static indentation on laminated composite shells"). Units and the
 angle unit of eqs 82-85 are not stated in the paper (paper-notes.md item 6).
 """
 

@@ -24,9 +24,10 @@ eta = (D12 + 2 D66) / sqrt(D11 D22) (classical lamination theory of the face pli
 travel is then the shell's deflection (ours) plus the local indentation, springs in series.
 
 Run: studies/sandwich.py [--quick] [--exe PATH] [--out DIR] [-j N] [--report-dir DIR]
-Writes OUT/ (the sweep, estimates.csv, summary.json) and docs/sandwich.md with
-docs/figures/sandwich_*.png (with --quick: OUT/report/ instead of docs/). Exit status 0 if the
-run and its checks passed. Needs /usr/bin/python3 with matplotlib and PyYAML.
+Writes OUT/ (the sweep, estimates.csv, summary.json) and the report sandwich.md with
+figures/sandwich_*.png in OUT/report/, or in --report-dir (`--report-dir docs/` regenerates the
+tracked docs/sandwich.md on purpose). Exit status 0 if the run and its checks passed. Needs
+/usr/bin/python3 with matplotlib.
 """
 import argparse
 import json
@@ -254,14 +255,18 @@ def write_report(report_dir, props, est, sweep, table, cases, quick):
     return path
 
 
+def report_directory(args, out):
+    """--report-dir, else OUT/report (docs/ only when asked for, as studies/paper_layups.py)."""
+    return os.path.abspath(args.report_dir or os.path.join(out, "report"))
+
+
 def main():
     args = parse_args()
     if not os.path.exists(args.exe):
         sys.exit(f"error: no executable {args.exe} (build first, or give --exe)")
     out = os.path.abspath(args.out or os.path.join(
         SOURCE_DIR, "results", "sandwich_study" + ("_quick" if args.quick else "")))
-    report_dir = os.path.abspath(args.report_dir or (
-        os.path.join(out, "report") if args.quick else os.path.join(SOURCE_DIR, "docs")))
+    report_dir = report_directory(args, out)
     os.makedirs(os.path.join(report_dir, "figures"), exist_ok=True)
 
     sweep = run_sweep(args.exe, os.path.join(STUDIES_DIR, "sandwich.yaml"), os.path.join(out, "sweep"),

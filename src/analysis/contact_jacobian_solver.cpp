@@ -201,6 +201,15 @@ void ContactJacobianSolver::factorize(const SparseMatrix& J, int num_shell,
   if (stale && !refresh_preconditioner()) factor_fallback();
 }
 
+void ContactJacobianSolver::forget_preconditioner() {
+  lu_.reset();  // UMFPACK's symbolic analysis reads the values of the matrix it was made from
+  has_preconditioner_ = false;
+  preconditioner_age_ = 0;
+  last_products_ = 0;
+  pre_rotations_.clear();
+  pre_rows_.clear();
+}
+
 void ContactJacobianSolver::apply_preconditioner(const Eigen::VectorXd& in,
                                                  Eigen::VectorXd& out) const {
   const int nf = num_shell_;

@@ -63,6 +63,10 @@ class ContactJacobianSolver {
 
   const ContactJacobianCounters& counters() const { return counters_; }
 
+  // Forgets the preconditioner and the fallback LU (the next factorize() makes fresh ones), as a
+  // new solver would have none: the solves that follow are those of a new solver, bit for bit.
+  void forget_preconditioner();
+
  private:
   struct RotationSlots {
     int a = -1, b = -1;  // slots of (eq_a, c) and (eq_b, c) in H_ (-1: prescribed component)

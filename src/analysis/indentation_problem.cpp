@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 
@@ -99,6 +100,24 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
   SI_REQUIRE(!reachable.empty(), "indentation: no node within reach of the indenter");
   const auto first = std::min_element(travel.begin(), travel.end());
   t0_ = *first;
+  // The contact face is the shell's +director side (the outer face, or the mid-surface touched
+  // from there). An indenter whose travel does not point into it at the first touch comes from
+  // behind: it would pass through the laminate to "touch" the face from inside.
+  const int touched = reachable[first - travel.begin()];
+  if (!(direction_.dot(mesh.directors[touched]) < 0.0)) {
+    const auto text = [](const Vector3d& v) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "[%.3g, %.3g, %.3g]", v.x(), v.y(), v.z());
+      return std::string(buf);
+    };
+    throw_input("the " + indenter.name() +
+                    " indenter travels away from the shell's contact face (or along it): at the "
+                    "first touch the face's outward normal is " +
+                    text(mesh.directors[touched]) +
+                    "; the direction of travel must point into the face (e.g. [0, 0, -1] from "
+                    "above a cap)",
+                Where{"", "indenter.direction", text(direction), 0});
+  }
   double extent = 0;
   for (const Vector3d& p : points) extent = std::max(extent, p.cwiseAbs().maxCoeff());
   touch_roundoff_ = 1e-13 * (1 + std::abs(t0_) + extent);
@@ -190,6 +209,17 @@ void IndentationProblem::build_weighted_gaps() {
   weighted_->C.makeCompressed();
   weighted_->g0 = inverse.cwiseProduct(ic.g0);
   weighted_->w = ic.w;
+}
+
+void IndentationProblem::reset_solver_caches() {
+  touch_guess_.assign(candidates_.size(), t0_);
+  cached_state_.reset();
+  if (krylov_) {
+    krylov_->forget_preconditioner();
+  } else {  // a fresh LU: its symbolic analysis depends on the values it first sees (UMFPACK)
+    solver_ = make_linear_solver(
+        options_.linear_solver == kPreconditionedKrylov ? "umfpack" : options_.linear_solver);
+  }
 }
 
 void IndentationProblem::restore_candidates(const std::vector<int>& nodes) {

@@ -171,6 +171,10 @@ class IndentationProblem : public cont::Problem {
   cont::Vector monitors(const cont::Vector& z, double h) override;
   std::vector<int> signature(const cont::Vector& z, double h) override;
   bool adapt(cont::Vector& z, double h) override;
+  // Drops what one solve hands the next (the reused preconditioner, the Newton guesses of the
+  // touch travels, the evaluate() cache): a resumed run, which starts without them, then goes
+  // on bit for bit as the uninterrupted one.
+  void reset_solver_caches() override;
 
   // The starting point: undeformed, no contact force (a solution at h = 0).
   cont::Vector initial_point() const;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
 
@@ -17,7 +16,7 @@
 #include "continuation/natural.hpp"
 #include "continuation/pseudo_arclength.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
+#include "core/units.hpp"
 #include "section/vam_section.hpp"
 
 namespace si {
@@ -86,6 +85,7 @@ PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback,
   r.monitor_names = s.problem->monitor_names();
   PathRecorder rec(r, callback);
   cont::Vector z = s.problem->initial_point();
+  r.final_unknowns = z;
   if (!rec.add(*s.problem, z, 0.0, 0, 0.0)) {
     finish(r, false, "stopped", "stopped by the user");
     return r;
@@ -98,6 +98,7 @@ PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback,
       finish(r, false, "failed", "depth " + std::to_string(h) + " mm: " + failure);
       return r;
     }
+    r.final_unknowns = z;
     if (!rec.add(*s.problem, z, h, iterations, h - previous)) {
       finish(r, false, "stopped", "stopped by the user");
       return r;
@@ -179,47 +180,56 @@ Eigen::VectorXd depth_slopes(const cont::Point& pt) {
   return pt.monitor_slopes / pt.tangent_p;
 }
 
-// The run's own part of a checkpoint, beside the library's: the candidate set (append-only, so
-// a checkpoint's size tells how much of it applies) and the points written so far.
-std::string sidecar_path(const std::string& checkpoint) {
-  return checkpoint + ".path.json";
-}
-
-void write_sidecar(const std::string& checkpoint, const IndentationProblem& problem,
-                   const PathResult& r) {
+// The run's own part of a checkpoint, saved by the library in the same file: the candidate set,
+// the points so far and the caller's record.
+nlohmann::json path_attachment(const IndentationProblem& problem, const PathResult& r,
+                               const PathControl& control) {
   nlohmann::json points = nlohmann::json::array();
   for (const PathPoint& p : r.points) points.push_back(path_point_values(p));
-  const nlohmann::json j = {{"candidates", problem.candidates()}, {"points", points}};
-  write_file_atomically(sidecar_path(checkpoint), j.dump() + "\n");
+  return {{"candidates", problem.candidates()},
+          {"points", points},
+          {"record", control.save_record ? control.save_record() : nlohmann::json()}};
 }
 
-// Restores the candidate set and the points of a checkpointed run; returns the checkpoint.
-cont::Checkpoint restore(const std::string& checkpoint, IndentationProblem& problem,
-                         PathResult& r) {
+// Restores the caller's record, the candidate set and the points of a checkpointed run; returns
+// the checkpoint.
+cont::Checkpoint restore(const PathControl& control, IndentationProblem& problem, PathResult& r) {
+  const Where where{control.checkpoint, "", "", 0};
   cont::Checkpoint c;
-  nlohmann::json side;
   try {
-    c = cont::load_checkpoint(checkpoint);
-    std::ifstream in(sidecar_path(checkpoint));
-    side = nlohmann::json::parse(in);
+    c = cont::load_checkpoint(control.checkpoint);
   } catch (const std::exception& e) {
-    throw_input(std::string("cannot resume: ") + e.what(), Where{checkpoint, "", "", 0});
+    throw_input(std::string("cannot resume: ") + e.what(), where);
   }
+  const nlohmann::json& a = c.attachment;
+  if (!a.is_object() || !a.contains("points") || !a.contains("candidates"))
+    throw_input(
+        "cannot resume: the checkpoint holds no path record (written by an older shellindent?); "
+        "run again without --resume",
+        where);
+  if (control.restore_record) control.restore_record(a.value("record", nlohmann::json()));
   const std::size_t nc =
       c.state.current.point.x.size() - problem.num_shell_unknowns() - problem.num_local_unknowns();
-  std::vector<int> candidates = side["candidates"].get<std::vector<int>>();
-  if (nc > candidates.size())
-    throw_input("cannot resume: the checkpoint does not belong to this case",
-                Where{checkpoint, "", "", 0});
-  candidates.resize(nc);
+  std::vector<int> candidates = a["candidates"].get<std::vector<int>>();
+  if (nc != candidates.size() || a["points"].size() != c.branch.points.size())
+    throw_input("cannot resume: the checkpoint does not belong to this case", where);
   problem.restore_candidates(candidates);
-  const std::size_t kept = std::min(c.branch.points.size(), side["points"].size());
-  for (std::size_t i = 0; i < kept; ++i) {
-    r.points.push_back(path_point_from_values(side["points"][i].get<std::vector<double>>()));
+  for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
+    r.points.push_back(path_point_from_values(a["points"][i].get<std::vector<double>>()));
     r.points.back().index = static_cast<int>(i);
     r.points.back().depth_slopes = depth_slopes(c.branch.points[i]);
   }
   return c;
+}
+
+// Why a continuation run ended, in the path's terms: "reached depth_max 10 mm" rather than the
+// library's "p reached the bound 10".
+std::string end_reason(const cont::Branch& b, const PathSpec& path) {
+  if (b.status != cont::Status::kReachedBound || b.points.empty()) return b.reason;
+  const double depth = b.points.back().p;
+  return depth > 0 ? "reached depth_max " + format_quantity(path.depth_max, Dimension::kLength)
+                   : "reached the lower bound of the depth, -depth_max = " +
+                         format_quantity(-path.depth_max, Dimension::kLength);
 }
 
 PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
@@ -230,18 +240,17 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   r.monitor_names = s.problem->monitor_names();
   settings.checkpoint_path = control.checkpoint;
   settings.checkpoint_interval = control.checkpoint.empty() ? 0 : control.checkpoint_interval;
-  settings.checkpoint_keeps_x = false;  // the points live in the sidecar
+  settings.checkpoint_keeps_x = false;  // the points live in the attachment
+  settings.checkpoint_attachment = [&] { return path_attachment(*s.problem, r, control); };
   PathRecorder rec(r, callback);
   const cont::Callback on_point = [&](const cont::Point& pt, const cont::Branch&) {
-    const bool go_on =
-        rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step, depth_slopes(pt));
-    if (!control.checkpoint.empty()) write_sidecar(control.checkpoint, *s.problem, r);
-    return go_on;
+    return rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step, depth_slopes(pt));
   };
   const bool natural = settings.method == cont::Method::kNatural;
   cont::Branch b;
   if (control.resume) {
-    const cont::Checkpoint c = restore(control.checkpoint, *s.problem, r);
+    const cont::Checkpoint c = restore(control, *s.problem, r);
+    r.final_unknowns = c.state.current.point.x;  // the last point, unless the run goes on
     b = natural ? cont::natural(*s.problem, c, settings, on_point)
                 : cont::pseudo_arclength(*s.problem, c, settings, on_point);
   } else {
@@ -250,8 +259,9 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
                                          on_point);
   }
   r.events = b.events;
+  if (!b.points.empty() && b.points.back().x.size() > 0) r.final_unknowns = b.points.back().x;
   const bool ok = b.status == cont::Status::kCompleted || b.status == cont::Status::kReachedBound;
-  finish(r, ok, cont::status_name(b.status), b.reason);
+  finish(r, ok, cont::status_name(b.status), end_reason(b, s.case_file.path));
   return r;
 }
 
@@ -289,6 +299,11 @@ IndentationSetup::IndentationSetup(CaseFile c, int threads, const std::string& l
       std::snprintf(buf, sizeof buf, "[%g, %g, %g]", v.x(), v.y(), v.z());
       return std::string(buf);
     };
+    if (e.where().key == "indenter.direction")  // the direction itself is wrong, not the pose
+      throw Error(e.kind(), e.reason(), Where{case_file.file, e.where().key, e.where().value, 0});
+    if (e.where().key == "element")  // a degenerate element (shell/quad4_shell.cpp)
+      throw Error(e.kind(), e.reason(),
+                  Where{case_file.file, "mesh.element", model.element->name(), 0});
     const std::string where = case_file.indenter.position ? "indenter.position" : "indenter";
     const std::string value = text(pose.position) + " mm, direction " + text(pose.direction);
     // The problem names `indenter`; the case's pose is what the user can change.

@@ -15,6 +15,7 @@
 
 #include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,8 @@ struct PathResult {
   bool completed = false;  // reached the end of the path
   std::string status;      // e.g. "completed", "reached_bound", "step_too_small", "stopped"
   std::string reason;      // why it stopped early; empty when completed
+  // The problem's unknowns at the last point (to write its fields); empty if there is none.
+  cont::Vector final_unknowns;
 };
 
 // Called after each accepted point with the point and the problem's unknowns; returning false
@@ -81,13 +84,19 @@ using PathCallback = std::function<bool(const PathPoint&, const cont::Vector& z)
 // grid are not resumable - they are fast or independent per depth and simply rerun).
 struct PathControl {
   // The continuation library's checkpoint file, written every checkpoint_interval points and at
-  // the end; beside it, "<checkpoint>.path.json" keeps the candidate set and the points. Empty:
-  // no checkpoints.
+  // the end (not when the callback stopped the run: the last periodic one is kept). It holds,
+  // in the same atomic write, the candidate set, the points and the caller's record, so a kill
+  // at any instant leaves them in step. Empty: no checkpoints.
   std::string checkpoint;
   int checkpoint_interval = 10;
-  // Continue from `checkpoint` (same case): the points before it are kept, the path goes on
-  // from its state and reproduces the uninterrupted run (to roundoff).
+  // Continue from `checkpoint` (same case): the points up to it are kept, the path goes on
+  // from its state and repeats the uninterrupted run bit for bit (the solver caches are dropped
+  // at every checkpoint, cont::Problem::reset_solver_caches).
   bool resume = false;
+  // The caller's own record (e.g. the CLI's case digest and VTU frames), saved with each
+  // checkpoint, and handed back on resume before the run goes on (it may throw to refuse).
+  std::function<nlohmann::json()> save_record;
+  std::function<void(const nlohmann::json&)> restore_record;
 };
 
 // The depth grid of a path section.

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 
 #include "core/error.hpp"
+#include "core/units.hpp"
 #include "model/cylindrical_panel_mesh.hpp"
 #include "model/plate_meshes.hpp"
 #include "model/spherical_cap_mesh.hpp"
@@ -108,8 +110,8 @@ void check_mesh_size(const CaseFile& c) {
     std::ostringstream os;
     os << "this element size asks for about " << std::llround(n) << " elements, more than the "
        << kMaxElements << " a direct solver can handle on one machine; use a larger size";
-    throw_input(os.str(),
-                Where{c.file, "mesh.size_apex", std::to_string(c.mesh.size_apex) + " mm", 0});
+    throw_input(os.str(), Where{c.file, "mesh.size_apex",
+                                format_quantity(c.mesh.size_apex, Dimension::kLength), 0});
   }
 }
 
@@ -122,7 +124,15 @@ Mesh shell_mesh_in_case(const CaseFile& c) {
     const std::string& key = e.where().key;
     const bool mesh_key = key.rfind("size_", 0) == 0 || key == "refine_radius";
     const std::string path = key.empty() ? "" : (mesh_key ? "mesh." : "shell.") + key;
-    throw Error(e.kind(), e.reason(), Where{c.file, path, e.where().value, 0});
+    // The generators print their numbers bare ("80.900000"): give them their unit. The CLI puts
+    // the value as written back when the key is in the case file (io/case_key_location.hpp).
+    std::string value = e.where().value;
+    char* end = nullptr;
+    const double number = std::strtod(value.c_str(), &end);
+    if (!value.empty() && end == value.c_str() + value.size())
+      value = format_quantity(
+          number, key.find("angle") != std::string::npos ? Dimension::kAngle : Dimension::kLength);
+    throw Error(e.kind(), e.reason(), Where{c.file, path, value, 0});
   }
 }
 

@@ -10,7 +10,9 @@
 #include <optional>
 #include <stdexcept>
 
+#include "core/decimal_number.hpp"
 #include "core/error.hpp"
+#include "core/value_excerpt.hpp"
 #include "fitting/builtin_models.hpp"
 #include "fitting/linear_fit.hpp"
 #include "fitting/polynomial_degree.hpp"
@@ -36,16 +38,13 @@ struct Range {
 
 double parse_bound(const std::string& part, const std::string& text) {
   if (part.empty()) return kInf;  // the caller flips the sign for an open lower end
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(part, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != part.size() || !std::isfinite(v))
-    throw_input("'" + part + "' is not a number; expected a:b, a: or :b", option("--range", text));
-  return v;
+  // Finite decimals only (core/decimal_number.hpp): nan, inf and hexadecimal floats refused.
+  const std::optional<double> v = parse_decimal(part);
+  if (!v)
+    throw_input(
+        "'" + value_excerpt(part) + "' is not a finite decimal number; expected a:b, a: or :b",
+        option("--range", text));
+  return *v;
 }
 
 Range parse_range(const std::string& text) {

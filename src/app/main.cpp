@@ -3,8 +3,10 @@
 //
 // Exit codes: 0 success, 2 bad input (including bad options), 1 numerical failure, 3 internal.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "app/fit_command.hpp"
 #include "app/run_command.hpp"
@@ -13,6 +15,7 @@
 #include "app/sweep_command.hpp"
 #include "core/blas_threads.hpp"
 #include "core/error.hpp"
+#include "io/did_you_mean.hpp"
 
 namespace {
 
@@ -86,6 +89,18 @@ constexpr const char* kFitHelp =
     "  shellindent fit results/cap/static.csv --model power --x apex_deflection_mm --y force_N\n"
     "  shellindent fit c1.csv --model poly --x angle_deg --y C1 --degree auto\n"
     "  shellindent fit path.csv --model power-log --x depth_mm --y force_N --range 0.1:10";
+
+// "commands:" and one line per subcommand: its description up to the first '.', ':' or ','.
+std::string command_list(const CLI::App& app) {
+  std::string out = "commands:\n";
+  for (const auto* sub : app.get_subcommands({})) {
+    const std::string& text = sub->get_description();
+    const std::string name = sub->get_name();
+    out += "  " + name + std::string(name.size() < 11 ? 11 - name.size() : 1, ' ') +
+           text.substr(0, text.find_first_of(".:,\n")) + "\n";
+  }
+  return out;
+}
 
 int run(int argc, char** argv) {
   CLI::App app{kDescription, "shellindent"};
@@ -171,18 +186,20 @@ int run(int argc, char** argv) {
       "layup", "Expand lay-up notation ply by ply (bottom to top) and print its compact form.");
   layup->add_option("notation", notation, "e.g. \"[0/+-45/90]s\"")->required();
 
-  // CLI11 would only say "a subcommand is required" for a mistyped command: name it instead.
-  if (argc > 1 && argv[1][0] != '-') {
-    std::string known;
-    bool found = false;
-    for (const auto* sub : app.get_subcommands({})) {
-      found = found || sub->get_name() == argv[1];
-      known += (known.empty() ? "" : ", ") + sub->get_name();
-    }
-    if (!found)
-      throw si::Error(si::ErrorKind::kInput,
-                      std::string("unknown command '") + argv[1] + "' (commands: " + known + ")");
+  // CLI11 would only say "a subcommand is required", for a bare `shellindent` as for a mistyped
+  // command: list the commands instead, and suggest the closest one.
+  std::vector<std::string> names;
+  for (const auto* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+  if (argc < 2) {
+    std::cerr << kDescription << "\n\n"
+              << command_list(app)
+              << "\nRun 'shellindent COMMAND --help' for the options of a command.\n";
+    return 2;
   }
+  if (argv[1][0] != '-' && std::find(names.begin(), names.end(), argv[1]) == names.end())
+    throw si::Error(si::ErrorKind::kInput,
+                    "unknown command" + si::did_you_mean(argv[1], names) + "\n" + command_list(app),
+                    si::Where{"command line", "", argv[1], 0});
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -2,40 +2,30 @@
 
 #include <unistd.h>
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "analysis/indentation_run.hpp"
 #include "analysis/local_contact.hpp"
 #include "analysis/result_fields.hpp"
+#include "app/interrupt_signals.hpp"
+#include "app/thread_count.hpp"
 #include "core/error.hpp"
+#include "core/units.hpp"
 #include "io/atomic_file.hpp"
+#include "io/case_digest.hpp"
+#include "io/case_key_location.hpp"
 #include "io/output_directory.hpp"
+#include "io/output_lock.hpp"
 #include "io/path_results.hpp"
 #include "io/vtu_writer.hpp"
 
 namespace si {
 namespace {
-
-// Ctrl-C asks the run to stop after the current point. A signal handler can only reach static
-// storage, so this one flag is the exception to "no global state"; it lives in this file only.
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_interrupt(int) {
-  g_interrupted = true;
-}
-
-class InterruptGuard {
- public:
-  InterruptGuard() { previous_ = std::signal(SIGINT, on_interrupt); }
-  ~InterruptGuard() { std::signal(SIGINT, previous_); }
-
- private:
-  void (*previous_)(int) = nullptr;
-};
 
 // The VTU of one point: resultants plus the contact pressure and force at every node.
 void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& s,
@@ -114,6 +104,90 @@ class Progress {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+std::string vtu_name(int index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "path_%04d.vtu", index);
+  return name;
+}
+
+std::string case_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// output.formats: which result files are written (checkpoint.json always, for --resume).
+struct OutputChoice {
+  bool csv = false, json = false, vtu = false;
+};
+
+OutputChoice output_choice(const OutputSpec& output) {
+  OutputChoice c;
+  for (OutputFormat f : output.formats) {
+    c.csv = c.csv || f == OutputFormat::kCsv;
+    c.json = c.json || f == OutputFormat::kJson;
+    c.vtu = c.vtu || f == OutputFormat::kVtu;
+  }
+  return c;
+}
+
+// Refuses a resume with another case than the one that wrote the checkpoint (io/case_digest.hpp),
+// naming the case file's first key that differs and its line.
+void check_same_case(const nlohmann::json& record, const CaseDigest& now, const std::string& file,
+                     const std::string& text, const std::string& checkpoint) {
+  CaseDigest before;
+  try {
+    before = CaseDigest::from_json(record.at("case"));
+  } catch (const std::exception&) {
+    throw_input("cannot resume: the checkpoint does not say which case wrote it",
+                Where{checkpoint, "", "", 0});
+  }
+  std::string key;
+  const std::vector<std::string> differences = case_differences(now, before, key);
+  if (differences.empty()) return;
+  std::string list;
+  for (const std::string& d : differences) list += (list.empty() ? "" : "; ") + d;
+  const Where where{file, key, "", 0};
+  throw located_in_case(
+      Error(ErrorKind::kInput,
+            "cannot resume: " + checkpoint + " was written for another case (" + list +
+                "); resume with that case, or run without --resume to start over",
+            where),
+      text);
+}
+
+// The result files of output.formats (docs/results.md); returns what was written, for the
+// "wrote ..." line.
+std::vector<std::string> write_path_files(const std::filesystem::path& dir,
+                                          const OutputChoice& formats,
+                                          const IndentationSetup& setup, const PathResult& r,
+                                          const std::vector<std::pair<double, std::string>>& vtus) {
+  const PathSpec& path = setup.case_file.path;
+  std::vector<std::string> written;
+  const bool arclength = r.method == "pseudo_arclength";
+  if (formats.csv) {
+    write_file_atomically((dir / "path.csv").string(), path_csv(r));
+    written.push_back((dir / "path.csv").string());
+    if (arclength) {
+      write_file_atomically((dir / "path_grid.csv").string(),
+                            path_grid_csv(r, path.step, path.depth_max));
+      written.push_back("path_grid.csv (interpolated at the depth steps)");
+    }
+  }
+  if (formats.json) {
+    write_file_atomically((dir / "path.json").string(), path_json(setup, r).dump(2) + "\n");
+    write_file_atomically((dir / "events.json").string(), events_json(r).dump(2) + "\n");
+    written.push_back((written.empty() ? (dir / "path.json").string() : "path.json") +
+                      ", events.json");
+  }
+  if (!vtus.empty()) {
+    write_file_atomically((dir / "path.pvd").string(), pvd_text(vtus));
+    written.push_back("path.pvd and " + std::to_string(vtus.size()) + " VTU files");
+  }
+  return written;
+}
+
 }  // namespace
 
 std::string default_case_yaml() {
@@ -131,44 +205,81 @@ std::string default_case_yaml() {
 }
 
 int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream& err) {
-  CaseFile c = o.case_file.empty() ? parse_case_file(default_case_yaml(), "built-in default case")
+  check_thread_count(o.threads);
+  const std::string text = o.case_file.empty() ? default_case_yaml() : case_text(o.case_file);
+  CaseFile c = o.case_file.empty() ? parse_case_file(text, "built-in default case")
                                    : read_case_file(o.case_file);
-  IndentationSetup setup(std::move(c), o.threads);
+  std::optional<IndentationSetup> built;
+  try {
+    built.emplace(std::move(c), o.threads);
+  } catch (const Error& e) {
+    throw located_in_case(e, text);
+  }
+  IndentationSetup& setup = *built;
   const CaseFile& cf = setup.case_file;
   for (const auto& w : setup.model.warnings) err << "shellindent: warning: " << w << "\n";
   const std::filesystem::path dir = o.out_dir.empty() ? cf.output.dir : o.out_dir;
-  prepare_output_directory(dir, o.out_dir.empty()
-                                    ? Where{cf.file, "output.dir", dir.string(), 0}
-                                    : Where{"command line", "--out", dir.string(), 0});
+  const Where dir_where =
+      o.out_dir.empty()
+          ? located_in_case(Error(ErrorKind::kInput, "", {cf.file, "output.dir", dir.string(), 0}),
+                            text)
+                .where()
+          : Where{"command line", "--out", dir.string(), 0};
+  PathControl control;
+  control.checkpoint = (dir / "checkpoint.json").string();
+  control.resume = o.resume;
+  // Before anything is made: a mistaken --resume must not leave an empty directory behind.
+  if (o.resume && !std::filesystem::exists(control.checkpoint))
+    throw_input("nothing to resume: no checkpoint in the output directory",
+                Where{"command line", "--resume", control.checkpoint, 0});
+  prepare_output_directory(dir, dir_where);
+  const OutputLock lock(dir, dir_where);
   err << "run: " << cf.file << ": " << setup.model.mesh.num_nodes() << " nodes, "
       << setup.model.mesh.num_elements() << " " << setup.model.element->name() << " elements, "
       << setup.problem->num_shell_unknowns() << " shell unknowns, "
       << setup.problem->candidates().size() << " contact candidates, first touch at travel "
       << setup.problem->first_touch() << " mm\n";
 
+  const OutputChoice formats = output_choice(cf.output);
+  const CaseDigest digest = case_digest(text);
   Progress progress(err, cf.path.depth_max);
   std::vector<std::pair<double, std::string>> vtus;
-  g_interrupted = false;
   InterruptGuard guard;
   const PathCallback on_point = [&](const PathPoint& p, const cont::Vector& z) {
     progress.show(p);
     const int every = cf.output.vtu_every;
-    if (every > 0 && p.index % every == 0) {
-      char name[32];
-      std::snprintf(name, sizeof name, "path_%04d.vtu", p.index);
-      write_point_vtu(dir / name, setup, p.state, z);
-      vtus.emplace_back(p.state.depth, name);
+    if (formats.vtu && every > 0 && p.index % every == 0) {
+      write_point_vtu(dir / vtu_name(p.index), setup, p.state, z);
+      vtus.emplace_back(p.state.depth, vtu_name(p.index));
     }
-    return !g_interrupted;
+    return !interrupted();
   };
-  PathControl control;
-  control.checkpoint = (dir / "checkpoint.json").string();
-  control.resume = o.resume;
-  if (o.resume && !std::filesystem::exists(control.checkpoint))
-    throw_input("nothing to resume: no checkpoint in the output directory",
-                Where{"command line", "--resume", control.checkpoint, 0});
+  control.save_record = [&] {
+    nlohmann::json frames = nlohmann::json::array();
+    for (const auto& [depth, name] : vtus) frames.push_back({depth, name});
+    return nlohmann::json{{"case", digest.to_json()}, {"vtu", frames}};
+  };
+  control.restore_record = [&](const nlohmann::json& record) {
+    check_same_case(record, digest, cf.file, text, control.checkpoint);
+    vtus.clear();
+    for (const auto& f : record.value("vtu", nlohmann::json::array()))
+      vtus.emplace_back(f.at(0).get<double>(), f.at(1).get<std::string>());
+  };
   const PathResult r = run_indentation_path(setup, on_point, control);
   progress.done();
+  // The last point always has its fields (vtu_every counts points: a 0-10 mm run's last VTU was
+  // at 6.22 mm).
+  if (formats.vtu && cf.output.vtu_every > 0 && !r.points.empty() &&
+      r.final_unknowns.size() == setup.problem->size()) {
+    const PathPoint& last = r.points.back();
+    const std::string name = vtu_name(last.index);
+    if (vtus.empty() || vtus.back().second != name) {
+      write_point_vtu(dir / name, setup,
+                      setup.problem->evaluate(r.final_unknowns, last.state.depth),
+                      r.final_unknowns);
+      vtus.emplace_back(last.state.depth, name);
+    }
+  }
 
   const bool local = setup.problem->local_law().kind != LocalLawKind::kNone;
   out << "Indentation of " << cf.file << " (" << r.method
@@ -181,23 +292,16 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
       out << "event: " << e.name << (e.monitor.empty() ? "" : " of " + e.monitor)
           << (e.against.empty() ? "" : " against " + e.against) << " at depth " << e.p << " mm\n";
 
-  write_file_atomically((dir / "path.csv").string(), path_csv(r));
-  write_file_atomically((dir / "path.json").string(), path_json(setup, r).dump(2) + "\n");
-  write_file_atomically((dir / "events.json").string(), events_json(r).dump(2) + "\n");
-  const bool arclength = r.method == "pseudo_arclength";
-  if (arclength)
-    write_file_atomically((dir / "path_grid.csv").string(),
-                          path_grid_csv(r, cf.path.step, cf.path.depth_max));
-  if (!vtus.empty()) write_file_atomically((dir / "path.pvd").string(), pvd_text(vtus));
-  err << "wrote " << (dir / "path.csv").string() << ", path.json, events.json"
-      << (arclength ? ", path_grid.csv (interpolated at the depth steps)" : "")
-      << (vtus.empty() ? "" : ", path.pvd and " + std::to_string(vtus.size()) + " VTU files")
-      << "\n";
+  const std::vector<std::string> written = write_path_files(dir, formats, setup, r, vtus);
+  err << "wrote ";
+  for (std::size_t i = 0; i < written.size(); ++i) err << (i ? ", " : "") << written[i];
+  err << (written.empty() ? "nothing (output.formats)" : "") << "\n";
   if (r.completed) return 0;
   err << "shellindent: error: the run stopped after " << r.points.size() << " converged point(s)"
-      << (r.points.empty() ? ""
-                           : " at depth " + std::to_string(r.points.back().state.depth) + " mm")
-      << ": " << (r.status == "stopped" && g_interrupted ? "interrupted (Ctrl-C)" : r.reason)
+      << (r.points.empty()
+              ? ""
+              : " at depth " + format_quantity(r.points.back().state.depth, Dimension::kLength))
+      << ": " << (interrupted() ? std::string("interrupted (") + interrupt_name() + ")" : r.reason)
       << "\n";
   return 1;
 }

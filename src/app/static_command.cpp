@@ -4,16 +4,20 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <vector>
 
 #include "analysis/result_fields.hpp"
 #include "analysis/shell_model.hpp"
+#include "app/thread_count.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
+#include "io/case_key_location.hpp"
 #include "io/output_directory.hpp"
+#include "io/output_lock.hpp"
 #include "io/vtu_writer.hpp"
 #include "model/static_solver.hpp"
 
@@ -77,18 +81,39 @@ nlohmann::json json_of(const CaseFile& c, const ShellModel& m, const DofMap& dof
           {"steps", steps}};
 }
 
-void write_results(const std::filesystem::path& dir, const ShellModel& m,
+bool wants(const OutputSpec& output, OutputFormat format) {
+  return std::find(output.formats.begin(), output.formats.end(), format) != output.formats.end();
+}
+
+// The files of output.formats: static.csv, static.json, static.vtu.
+void write_results(const std::filesystem::path& dir, const ShellModel& m, const OutputSpec& output,
                    const Assembler& assembler, const std::vector<NodeState>* last_state,
                    const std::string& csv, const std::string& json, std::ostream& err) {
-  write_file_atomically((dir / "static.csv").string(), csv);
-  write_file_atomically((dir / "static.json").string(), json);
-  err << "wrote " << (dir / "static.csv").string() << " and " << (dir / "static.json").string();
-  if (last_state != nullptr) {
+  std::vector<std::string> written;
+  if (wants(output, OutputFormat::kCsv)) {
+    write_file_atomically((dir / "static.csv").string(), csv);
+    written.push_back((dir / "static.csv").string());
+  }
+  if (wants(output, OutputFormat::kJson)) {
+    write_file_atomically((dir / "static.json").string(), json);
+    written.push_back((dir / "static.json").string());
+  }
+  if (last_state != nullptr && wants(output, OutputFormat::kVtu)) {
     const VtuFields fields = resultant_fields(m.mesh, assembler, *m.element, m.law, *last_state);
     write_vtu((dir / "static.vtu").string(), m.mesh, *last_state, fields);
-    err << " and " << (dir / "static.vtu").string();
+    written.push_back((dir / "static.vtu").string());
   }
-  err << "\n";
+  err << "wrote ";
+  for (std::size_t i = 0; i < written.size(); ++i)
+    err << (i == 0 ? "" : i + 1 == written.size() ? " and " : ", ") << written[i];
+  err << (written.empty() ? "nothing (output.formats)" : "") << "\n";
+}
+
+std::string case_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 bool on_nominal_grid(double load_factor, int steps) {
@@ -99,18 +124,31 @@ bool on_nominal_grid(double load_factor, int steps) {
 }  // namespace
 
 int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::ostream& err) {
+  check_thread_count(o.threads);
   const CaseFile c = read_case_file(o.case_file);
+  const std::string text = case_text(o.case_file);
   if (!c.load)
     throw_input("a static run needs a `load` section, e.g. load: {type: apex_force, force: 1 kN}",
                 Where{c.file, "load", "", 0});
-  const ShellModel m = build_shell_model(c);
+  const ShellModel m = [&] {
+    try {
+      return build_shell_model(c);
+    } catch (const Error& e) {
+      throw located_in_case(e, text);
+    }
+  }();
   for (const auto& w : m.warnings) err << "shellindent: warning: " << w << "\n";
-  // The output directory is made (and checked) once the input is valid and before the run, so
-  // that a long run cannot be lost to a bad --out at the end.
+  // The output directory is made (and checked, and locked) once the input is valid and before
+  // the run, so that a long run cannot be lost to a bad --out at the end.
   const std::filesystem::path dir = o.out_dir.empty() ? c.output.dir : o.out_dir;
-  prepare_output_directory(dir, o.out_dir.empty()
-                                    ? Where{c.file, "output.dir", dir.string(), 0}
-                                    : Where{"command line", "--out", dir.string(), 0});
+  const Where dir_where =
+      o.out_dir.empty()
+          ? located_in_case(Error(ErrorKind::kInput, "", {c.file, "output.dir", dir.string(), 0}),
+                            text)
+                .where()
+          : Where{"command line", "--out", dir.string(), 0};
+  prepare_output_directory(dir, dir_where);
+  const OutputLock lock(dir, dir_where);
 
   const DofMap dofs = make_dof_map(m.mesh, m.supports);
   StaticSettings settings;
@@ -146,8 +184,13 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
     solver.solve(state, on_step);
   } catch (const Error& e) {
     // Input errors raised inside the run come from the elements (a degenerate element).
-    if (e.kind() == ErrorKind::kInput)
-      throw e.within(Where{c.file, "mesh.element", m.element->name(), 0});
+    if (e.kind() == ErrorKind::kInput) {
+      Where w = e.where();
+      if (w.key == "element") w.key.clear();  // a degenerate element (shell/quad4_shell.cpp)
+      throw located_in_case(Error(e.kind(), e.reason(), w)
+                                .within(Where{c.file, "mesh.element", m.element->name(), 0}),
+                            text);
+    }
     if (e.kind() != ErrorKind::kNumerical) throw;
     failure = e.what();
   }
@@ -157,7 +200,7 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   for (const auto& r : rows) out << format_row(r) << "\n";
 
   const Assembler assembler(m.mesh, dofs, *m.element, m.law, m.kinematics, o.threads);
-  write_results(dir, m, assembler, rows.empty() ? nullptr : &last_state, csv_text(rows),
+  write_results(dir, m, c.output, assembler, rows.empty() ? nullptr : &last_state, csv_text(rows),
                 json_of(c, m, dofs, rows, failure).dump(2) + "\n", err);
   if (failure.empty()) return 0;
   err << "shellindent: error: the run stopped after " << rows.size() << " converged step(s)"

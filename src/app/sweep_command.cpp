@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,12 +19,14 @@
 #include <optional>
 #include <sstream>
 
+#include "app/thread_count.hpp"
 #include "core/error.hpp"
 #include "fitting/builtin_models.hpp"
 #include "fitting/curve_model.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
 #include "io/output_directory.hpp"
+#include "io/output_lock.hpp"
 #include "io/study_file.hpp"
 
 extern char** environ;
@@ -315,14 +318,19 @@ std::string resolve_executable(const std::string& exe) {
 }  // namespace
 
 int run_sweep_command(const SweepCommandOptions& o, std::ostream& out, std::ostream& err) {
-  if (o.jobs < 1)
-    throw_input("expected at least 1 job", Where{"command line", "-j", std::to_string(o.jobs)});
+  check_parallel_count(o.jobs, "-j", 1, "cases at once");
   const StudyFile study = read_study_file(o.study_file);
   const std::vector<StudyCase> cases = expand_study(study, o.quick);
+  for (const StudyCase& c : cases)  // the sweep's table is read from each case's path.json
+    if (std::find(c.case_file.output.formats.begin(), c.case_file.output.formats.end(),
+                  OutputFormat::kJson) == c.case_file.output.formats.end())
+      throw_input("a sweep reads each case's path.json: output.formats must include json",
+                  Where{c.label, "output.formats", "", 0});
   const fs::path root = o.out_dir.empty() ? fs::path("results") / study.name : fs::path(o.out_dir);
-  prepare_output_directory(root, o.out_dir.empty()
-                                     ? Where{study.file, "name", study.name, 0}
-                                     : Where{"command line", "--out", root.string(), 0});
+  const Where root_where = o.out_dir.empty() ? Where{study.file, "name", study.name, 0}
+                                             : Where{"command line", "--out", root.string(), 0};
+  prepare_output_directory(root, root_where);
+  const OutputLock lock(root, root_where);
   const fs::path case_root = root / "cases";
   err << "sweep: " << study.file << ": " << cases.size() << " case(s)"
       << (o.quick ? " (--quick)" : "") << ", " << o.jobs << " at once, in " << case_root.string()

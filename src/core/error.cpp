@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "core/value_excerpt.hpp"
+
 namespace si {
 
 std::string format_error(const std::string& reason, const Where& where) {
@@ -13,10 +15,10 @@ std::string format_error(const std::string& reason, const Where& where) {
   }
   if (!where.key.empty()) {
     prefix += where.key;
-    if (!where.value.empty()) prefix += " = '" + where.value + "'";
+    if (!where.value.empty()) prefix += " = '" + value_excerpt(where.value) + "'";
     prefix += ": ";
   } else if (!where.value.empty()) {
-    prefix += "'" + where.value + "': ";
+    prefix += "'" + value_excerpt(where.value) + "': ";
   }
   return prefix + reason;
 }

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 
+#include "core/decimal_number.hpp"
 #include "core/error.hpp"
+#include "core/value_excerpt.hpp"
 
 namespace si {
 namespace {
@@ -140,31 +142,35 @@ double parse_quantity(std::string_view text_in, Dimension dim) {
   const Where where{"", "", text, 0};
   if (text.empty()) throw_input("empty value; expected " + with_article(dim), where);
 
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  errno = 0;
-  const double number = std::strtod(begin, &end);
-  if (end == begin) {
+  std::size_t length = 0;
+  const std::optional<double> parsed = parse_decimal_prefix(text, length);
+  if (!parsed) {
     throw_input(
-        "not a number; expected " + with_article(dim) +
+        (is_hexadecimal(text) ? "a hexadecimal number: write it in decimal; expected "
+                              : "not a number; expected ") +
+            with_article(dim) +
             (dim == Dimension::kDimensionless ? "" : " such as '1 " + internal_unit(dim) + "'"),
         where);
   }
-  if (errno == ERANGE || !std::isfinite(number)) throw_input("number out of range", where);
+  const double number = *parsed;
+  // Overflow ("1e999") and underflow to a denormal or zero ("1e-999") are both slips.
+  if (!std::isfinite(number) || (number != 0.0 && std::abs(number) < 1e-300))
+    throw_input("number out of range", where);
 
-  const std::string unit = trim(std::string_view(end));
+  const std::string unit = trim(text.substr(length));
   if (dim == Dimension::kDimensionless) {
     if (!unit.empty()) throw_input("expected a plain number without a unit", where);
     return number;
   }
   if (unit.empty()) {
-    throw_input("missing unit: write the " + dimension_name(dim) + " with its unit, e.g. '" + text +
-                    " " + internal_unit(dim) + "' (accepted: " + join(accepted_units(dim)) + ")",
+    throw_input("missing unit: write the " + dimension_name(dim) + " with its unit, e.g. '" +
+                    value_excerpt(text) + " " + internal_unit(dim) +
+                    "' (accepted: " + join(accepted_units(dim)) + ")",
                 where);
   }
   const UnitDef* def = find_unit(unit);
   if (def == nullptr) {
-    throw_input("unknown unit '" + unit + "' for " + with_article(dim) +
+    throw_input("unknown unit '" + value_excerpt(unit) + "' for " + with_article(dim) +
                     " (accepted: " + join(accepted_units(dim)) + ")",
                 where);
   }

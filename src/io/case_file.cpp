@@ -1,6 +1,7 @@
 #include "io/case_file.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "core/units.hpp"
 #include "io/laminate_reader.hpp"
 #include "io/material_reader.hpp"
+#include "io/plausible_range.hpp"
 #include "io/yaml_reader.hpp"
 
 namespace si {
@@ -69,9 +71,9 @@ ShellSpec read_shell(const MapReader& top) {
       map->allow_only({"type", "base_radius", "radius", "edge"});
       shell.base_radius = map->positive("base_radius", Dimension::kLength);
       shell.radius = map->positive("radius", Dimension::kLength);
-      if (shell.base_radius > shell.radius)
-        throw_input("a spherical cap's base radius cannot exceed the sphere radius (" +
-                        map->scalar("radius") + ")",
+      if (shell.base_radius >= shell.radius)
+        throw_input("a spherical cap's base radius must be smaller than the sphere radius (" +
+                        map->scalar("radius") + "): a hemisphere or more is not a cap",
                     map->where("base_radius"));
       break;
     case ShellType::kFlatCircularPlate:
@@ -127,6 +129,8 @@ Vector3d read_vector(const MapReader& map, const std::string& key, Dimension dim
     } catch (const Error& e) {
       throw e.within(map.where(key));
     }
+    if (dim == Dimension::kLength && std::abs(v[i]) > kLengthRange.max)
+      check_plausible(v[i], kLengthRange, map.where(key));
   }
   return v;
 }

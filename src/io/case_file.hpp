@@ -101,7 +101,7 @@ enum class OutputFormat { kCsv, kJson, kVtu };
 struct OutputSpec {
   std::string dir = "results/";
   int vtu_every = 10;  // write a VTU file every n converged steps; 0 = never
-  std::vector<OutputFormat> formats{OutputFormat::kCsv, OutputFormat::kVtu};
+  std::vector<OutputFormat> formats{OutputFormat::kCsv, OutputFormat::kJson, OutputFormat::kVtu};
 };
 
 enum class LoadType { kApexForce, kPressure };

@@ -3,8 +3,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 
+#include "core/decimal_number.hpp"
 #include "core/error.hpp"
+#include "core/value_excerpt.hpp"
 #include "io/did_you_mean.hpp"
 
 namespace si {
@@ -79,7 +82,9 @@ CsvTable read_csv_table(const std::string& path) {
           throw_input("column " + std::to_string(j + 1) + " of the header has no name", where);
         for (size_t k = 0; k < j; ++k)
           if (fields[k] == fields[j])
-            throw_input("column name '" + fields[j] + "' appears twice in the header", where);
+            throw_input(
+                "column name '" + value_excerpt(fields[j]) + "' appears twice in the header",
+                where);
       }
       t.names = std::move(fields);
       continue;
@@ -115,11 +120,17 @@ std::vector<double> CsvTable::numeric_column(const std::string& name) const {
     const Where where{file, name, cell, lines[i]};
     const std::string at = " (column " + std::to_string(j + 1) + ")";
     if (cell.empty()) throw_input("empty cell" + at, where);
-    char* end = nullptr;
-    const double v = std::strtod(cell.c_str(), &end);
-    if (end != cell.c_str() + cell.size()) throw_input("not a number" + at, where);
-    if (!std::isfinite(v)) throw_input("not a finite number" + at, where);
-    values.push_back(v);
+    // Decimal numbers only (core/decimal_number.hpp): no nan, inf or hexadecimal floats.
+    std::size_t used = 0;
+    const std::optional<double> v = parse_decimal_prefix(cell, used);
+    if (v && used == cell.size() && !std::isfinite(*v))
+      throw_input("not a finite number" + at, where);
+    if (!v || used != cell.size())
+      throw_input(
+          (is_hexadecimal(cell) ? "a hexadecimal number: write it in decimal" : "not a number") +
+              at,
+          where);
+    values.push_back(*v);
   }
   return values;
 }

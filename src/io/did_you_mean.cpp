@@ -1,6 +1,7 @@
 #include "io/did_you_mean.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace si {
 
@@ -25,6 +26,10 @@ std::string did_you_mean(const std::string& word, const std::vector<std::string>
   const std::string* best = nullptr;
   int best_distance = tolerance + 1;
   for (const auto& c : candidates) {
+    // The distance is at least the difference in length: skip the quadratic table for words
+    // that cannot be close (a megabyte-long value must not take seconds here).
+    const auto gap = static_cast<long>(word.size()) - static_cast<long>(c.size());
+    if (std::abs(gap) > tolerance) continue;
     const int d = edit_distance(word, c);
     if (d < best_distance) {
       best_distance = d;

@@ -3,7 +3,9 @@
 #include <optional>
 
 #include "core/units.hpp"
+#include "core/value_excerpt.hpp"
 #include "io/did_you_mean.hpp"
+#include "io/plausible_range.hpp"
 #include "io/yaml_reader.hpp"
 #include "material/material_library.hpp"
 
@@ -103,10 +105,18 @@ std::vector<std::string> inline_keys(std::vector<std::string> constants) {
   return constants;
 }
 
+// A modulus as written, within the plausible range (io/plausible_range.hpp); its sign is the
+// material's to check (it names the constant in its message).
+double read_modulus(const MapReader& map, const std::string& key) {
+  const double value = map.quantity(key, Dimension::kStress);
+  if (value > 0.0) check_plausible(value, kModulusRange, map.where(key));
+  return value;
+}
+
 Material read_elastic_constants(const MapReader& map, const std::string& name, bool isotropic) {
   if (isotropic) {
     map.allow_only(inline_keys({"E", "nu"}));
-    const double E = map.quantity("E", Dimension::kStress);
+    const double E = read_modulus(map, "E");
     const double nu = map.quantity("nu", Dimension::kDimensionless);
     try {
       return Material::isotropic(name, E, nu);
@@ -116,12 +126,12 @@ Material read_elastic_constants(const MapReader& map, const std::string& name, b
   }
   map.allow_only(inline_keys({"E1", "E2", "E3", "G12", "G13", "G23", "nu12", "nu13", "nu23"}));
   EngineeringConstants c;
-  c.E1 = map.quantity("E1", Dimension::kStress);
-  c.E2 = map.quantity("E2", Dimension::kStress);
-  c.E3 = map.quantity("E3", Dimension::kStress);
-  c.G12 = map.quantity("G12", Dimension::kStress);
-  c.G13 = map.quantity("G13", Dimension::kStress);
-  c.G23 = map.quantity("G23", Dimension::kStress);
+  c.E1 = read_modulus(map, "E1");
+  c.E2 = read_modulus(map, "E2");
+  c.E3 = read_modulus(map, "E3");
+  c.G12 = read_modulus(map, "G12");
+  c.G13 = read_modulus(map, "G13");
+  c.G23 = read_modulus(map, "G23");
   c.nu12 = map.quantity("nu12", Dimension::kDimensionless);
   c.nu13 = map.quantity("nu13", Dimension::kDimensionless);
   c.nu23 = map.quantity("nu23", Dimension::kDimensionless);
@@ -174,7 +184,7 @@ Material MaterialTable::find(const std::string& name, const Where& where) const 
   for (const auto& m : named) defined.push_back(m.name());
   std::vector<std::string> all = defined;
   all.insert(all.end(), library.begin(), library.end());
-  throw_input("undefined material '" + name + "'" + did_you_mean(name, all) +
+  throw_input("undefined material '" + value_excerpt(name) + "'" + did_you_mean(name, all) +
                   "; defined in the file: " + join(defined) + "; library: " + join(library),
               where);
 }

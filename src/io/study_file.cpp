@@ -1,10 +1,14 @@
 #include "io/study_file.hpp"
 
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
+#include "core/decimal_number.hpp"
+#include "core/value_excerpt.hpp"
 #include "io/yaml_reader.hpp"
 
 namespace si {
@@ -39,12 +43,19 @@ std::vector<std::string> split_key(const std::string& key, const Where& where) {
   return parts;
 }
 
-// Keys with their values, in file order; a value that is not a map is refused.
+// Keys with their values, in file order; a value that is not a map is refused, and so is a key
+// that is not a dotted key (a list or a map written as a key).
 std::vector<KeyValue> read_key_values(const MapReader& map, const std::string& key) {
   std::vector<KeyValue> out;
   if (!map.has(key)) return out;
   const MapReader sub(map.at(key), map.where(key));
-  for (const auto& kv : sub.node()) out.push_back({kv.first.as<std::string>(), kv.second});
+  for (const auto& kv : sub.node()) {
+    if (!kv.first.IsScalar() || kv.first.Scalar().empty())
+      throw_input("expected a dotted case-file key such as mesh.size_apex, got " +
+                      std::string(kv.first.IsSequence() ? "a list" : "a map or nothing"),
+                  Where{map.where().file, key, text_of(kv.first), line_of(kv.first)});
+    out.push_back({kv.first.Scalar(), kv.second});
+  }
   return out;
 }
 
@@ -73,14 +84,14 @@ StudyFit read_fit(const MapReader& map) {
   const std::string r = f.scalar("range");
   const auto colon = r.find(':');
   if (colon == std::string::npos) throw_input("expected a:b, a: or :b", f.where("range"));
-  try {
-    const std::string a = r.substr(0, colon);
-    const std::string b = r.substr(colon + 1);
-    if (!a.empty()) fit.depth_min = std::stod(a);
-    if (!b.empty()) fit.depth_max = std::stod(b);
-  } catch (const std::exception&) {
-    throw_input("not a number; expected a:b, a: or :b (depths in mm)", f.where("range"));
-  }
+  const std::string a = r.substr(0, colon);
+  const std::string b = r.substr(colon + 1);
+  const std::optional<double> lo = parse_decimal(a), hi = parse_decimal(b);
+  if ((!a.empty() && !lo) || (!b.empty() && !hi))
+    throw_input("not a finite decimal number; expected a:b, a: or :b (depths in mm)",
+                f.where("range"));
+  if (lo) fit.depth_min = *lo;
+  if (hi) fit.depth_max = *hi;
   if (fit.depth_min >= fit.depth_max)
     throw_input("the lower end is not below the upper end", f.where("range"));
   return fit;
@@ -101,6 +112,27 @@ std::string slug_of(const std::vector<std::pair<std::string, std::string>>& valu
   }
   while (!s.empty() && s.back() == '_') s.pop_back();
   return s.substr(0, 60);
+}
+
+// The most cases a study may expand to: every case is a full run, so more is a slip (8 keys of
+// 25 values asked for 1.5e11 cases and allocated until bad_alloc). Counted before expanding.
+constexpr double kMaxCases = 10000;
+
+void check_case_count(const StudyFile& study) {
+  if (study.zip) return;  // zip: as many cases as the longest list, which the file holds
+  double count = 1;
+  std::string product;
+  for (const auto& [key, values] : study.vary) {
+    count *= static_cast<double>(values.size());
+    product += (product.empty() ? "" : " x ") + key + " (" + std::to_string(values.size()) + ")";
+  }
+  if (count <= kMaxCases) return;
+  char total[32];
+  std::snprintf(total, sizeof total, "%.4g", count);
+  throw_input("the product of the varied values is " + std::string(total) + " cases (" + product +
+                  "), more than " + std::to_string(static_cast<long>(kMaxCases)) +
+                  "; vary fewer keys or values, or use combine: zip",
+              Where{study.file, "vary", "", line_of(study.vary.front().second.front())});
 }
 
 // The index tuples of the cases: the product (first key slowest) or the zip of the lists.
@@ -143,8 +175,8 @@ void set_dotted_key(YAML::Node root, const std::string& dotted_key, const YAML::
       parent[parts[i]] = YAML::Node(YAML::NodeType::Map);
     YAML::Node child = parent[parts[i]];
     if (!child.IsMap())
-      throw_input("cannot set this key: '" + parts[i] + "' in the base case is not a map (it is '" +
-                      text_of(child) + "')",
+      throw_input("cannot set this key: '" + value_excerpt(parts[i]) +
+                      "' in the base case is not a map (it is '" + text_of(child) + "')",
                   where);
     chain.push_back(child);
   }
@@ -165,6 +197,7 @@ StudyFile parse_study_file(const std::string& yaml_text, const std::string& file
   s.base_yaml = read_text(s.base, map.where("base"), "base case file");
   s.vary = read_vary(map);
   s.zip = map.choice_or("combine", Choices<bool>{{"product", false}, {"zip", true}}, false);
+  check_case_count(s);
   s.quick = read_key_values(map, "quick");
   s.has_fit = map.has("fit");
   if (s.has_fit) s.fit = read_fit(map);

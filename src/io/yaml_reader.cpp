@@ -3,7 +3,9 @@
 #include <charconv>
 #include <set>
 
+#include "core/value_excerpt.hpp"
 #include "io/did_you_mean.hpp"
+#include "io/plausible_range.hpp"
 
 namespace si {
 namespace {
@@ -69,13 +71,15 @@ MapReader::MapReader(const YAML::Node& node, Where where) : node_(node), where_(
 void MapReader::allow_only(const std::vector<std::string>& allowed) const {
   std::set<std::string> seen;
   for (const auto& entry : node_) {
-    const std::string key = entry.first.Scalar();
+    // A list or a map written as a key ("? [a, b]") is no key name: quote it as written.
+    const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : text_of(entry.first);
     Where w{where_.file, path(key), text_of(entry.second), line_of(entry.first)};
     if (!seen.insert(key).second) throw_input("key given twice", w);
     bool known = false;
     for (const auto& a : allowed) known = known || a == key;
     if (!known) {
-      throw_input("unknown key '" + key + "'" + did_you_mean(key, allowed) + "; allowed in " +
+      throw_input("unknown key '" + value_excerpt(key) + "'" + did_you_mean(key, allowed) +
+                      "; allowed in " +
                       (where_.key.empty() ? "the case file" : "'" + where_.key + "'") + ": " +
                       join(allowed),
                   w);
@@ -92,7 +96,7 @@ bool MapReader::has(const std::string& key) const {
 YAML::Node MapReader::at(const std::string& key) const {
   for (const auto& entry : node_)
     if (entry.first.Scalar() == key) return entry.second;
-  throw_input("missing key '" + key + "'", where(key));
+  throw_input("missing key '" + value_excerpt(key) + "'", where(key));
 }
 
 std::string MapReader::path(const std::string& key) const {
@@ -126,6 +130,9 @@ double MapReader::quantity_or(const std::string& key, Dimension dim, double fall
 double MapReader::positive(const std::string& key, Dimension dim) const {
   const double value = quantity(key, dim);
   if (!(value > 0.0)) throw_input("must be positive", where(key));
+  if (dim == Dimension::kLength) check_plausible(value, kLengthRange, where(key));
+  if (dim == Dimension::kForce) check_plausible(value, kForceRange, where(key));
+  if (dim == Dimension::kStress) check_plausible(value, kPressureRange, where(key));
   return value;
 }
 

@@ -27,13 +27,17 @@
 namespace si {
 
 // Expands a lay-up string into ply angles in degrees, bottom ply first. Throws an input
-// si::Error whose reason quotes the string and gives the 1-based character position of the
-// problem, e.g. "lay-up '[45//0]': empty ply at character 5".
+// si::Error whose reason quotes the string (its first 80 characters) and gives the 1-based
+// character position of the problem, e.g. "lay-up '[45//0]': empty ply at character 5".
+// Groups nest at most 64 deep: the parser is recursive and a hostile string must not exhaust
+// the stack.
 std::vector<double> parse_layup(std::string_view notation);
 
 // A compact notation for a ply list (bottom first) using runs ("0_2"), ± pairs, a repetition
-// count and 'S' where they shorten it; parse_layup(format_layup(a)) == a for every non-empty
-// list of finite angles with |angle| <= 360. Throws an input si::Error for other lists.
+// count and 'S' where they shorten it, every count within the parser's limit of 1000 (longer
+// runs become nested groups: 2000 plies at 0 deg print as "[(0_1000)2]"). parse_layup(
+// format_layup(a)) == a for every list of 1 to 100,000 finite angles with |angle| <= 360 (the
+// parser's limits). Throws an input si::Error for an empty list or a bad angle.
 std::string format_layup(const std::vector<double>& angles_deg);
 
 // A short label for reports: the compact notation when every ply has the same material and

@@ -147,12 +147,14 @@ LocalFrame local_frame(const PointKinematics& p, const Vector3d& material_axis) 
   const double scale = p.X_a[0].squaredNorm() + p.X_a[1].squaredNorm();
   if (!(f.area > 1e-10 * scale))
     throw_input("degenerate shell element: zero-area mid-surface (|X,xi x X,eta| = " +
-                number(f.area) + " at a Gauss point)");
+                    number(f.area) + " at a Gauss point)",
+                Where{"", "element", "", 0});
   Vector3d n = normal / f.area;
   const double cos_dn = p.D.dot(n) / p.D.norm();
   if (!(std::abs(cos_dn) > 0.1))
     throw_input("degenerate shell element: director nearly tangent to the mid-surface (cos = " +
-                number(cos_dn) + " between director and normal; |cos| must exceed 0.1)");
+                    number(cos_dn) + " between director and normal; |cos| must exceed 0.1)",
+                Where{"", "element", "", 0});
   if (cos_dn < 0) n = -n;
   Vector3d t1 = material_axis - material_axis.dot(n) * n;
   t1 = t1.norm() > 1e-8 * material_axis.norm() ? t1.normalized() : p.X_a[0].normalized();

@@ -115,6 +115,65 @@ TEST(ContCheckpoint, ResumeFromCheckpointWithoutPointStates) {
   expect_resume_reproduces(Method::kPseudoArclength, false);
 }
 
+// x - p = 0, counting Problem::reset_solver_caches() calls.
+class CountingLine final : public Problem {
+ public:
+  int size() const override { return 1; }
+  bool residual(const Vector& x, double p, Vector& F) override {
+    F = Vector::Constant(1, x[0] - p);
+    return true;
+  }
+  bool factorize(const Vector&, double) override { return true; }
+  bool solve(Vector&) override { return true; }  // dF/dx = 1
+  void reset_solver_caches() override { ++resets; }
+  int resets = 0;
+};
+
+Settings line_settings(const std::string& path) {
+  Settings s;
+  s.method = Method::kNatural;
+  s.step_initial = s.step_max = 0.1;
+  s.p_min = 0.0;
+  s.p_max = 1.0;
+  s.checkpoint_path = path;
+  s.checkpoint_interval = 3;
+  return s;
+}
+
+// Issue 13 items 12-13: the caller's record goes into the same file as the branch, written after
+// the callback saw the point (so it always holds the checkpoint's points); the solver caches are
+// dropped after every periodic checkpoint and before a resume; a run stopped by its callback
+// keeps its last periodic checkpoint.
+TEST(ContCheckpoint, AttachmentIsInStepWithTheBranchAndCachesAreDroppedAtCheckpoints) {
+  CountingLine line;
+  Settings s = line_settings(temp_path("line.json"));
+  int seen = 0;
+  s.checkpoint_attachment = [&] { return nlohmann::json{{"seen", seen}}; };
+  const Callback count = [&](const Point&, const Branch&) { return ++seen > 0; };
+  const Branch whole = natural(line, Vector::Zero(1), 0.0, s, count);
+  ASSERT_EQ(whole.status, Status::kReachedBound);
+  const int steps = static_cast<int>(whole.points.size()) - 1;
+  EXPECT_EQ(line.resets, steps / 3 + 1);  // steps 0, 3, 6, 9
+  const Checkpoint end = load_checkpoint(s.checkpoint_path);
+  EXPECT_EQ(end.attachment.at("seen").get<std::size_t>(), end.branch.points.size());
+
+  CountingLine stopped;
+  seen = 0;
+  const Callback stop_at_five = [&](const Point&, const Branch&) { return ++seen < 5; };
+  natural(stopped, Vector::Zero(1), 0.0, s, stop_at_five);
+  const Checkpoint kept = load_checkpoint(s.checkpoint_path);
+  EXPECT_EQ(kept.branch.points.size(), 4u);  // the step-3 checkpoint, not the stop at step 4
+  EXPECT_EQ(kept.branch.status, Status::kRunning);
+  EXPECT_EQ(kept.attachment.at("seen").get<int>(), 4);
+
+  CountingLine resumed;
+  const Branch rest = natural(resumed, kept, line_settings(temp_path("rest.json")));
+  EXPECT_EQ(rest.points.size(), whole.points.size());
+  EXPECT_GE(resumed.resets, 1);
+  fs::remove(s.checkpoint_path);
+  fs::remove(temp_path("rest.json"));
+}
+
 TEST(ContCheckpoint, JsonRoundTripIsExact) {
   Checkpoint c;
   c.method = Method::kNatural;

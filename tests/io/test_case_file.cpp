@@ -76,7 +76,8 @@ TEST(CaseFile, OptionalSectionsDefaultToThePaperCase) {
   EXPECT_TRUE(c.path.depths.empty());
   EXPECT_EQ(c.output.dir, "results/");
   EXPECT_EQ(c.output.vtu_every, 10);
-  EXPECT_EQ(c.output.formats, (std::vector<OutputFormat>{OutputFormat::kCsv, OutputFormat::kVtu}));
+  EXPECT_EQ(c.output.formats, (std::vector<OutputFormat>{OutputFormat::kCsv, OutputFormat::kJson,
+                                                         OutputFormat::kVtu}));
 }
 
 TEST(CaseFile, ConvertsUnitsToInternalUnits) {

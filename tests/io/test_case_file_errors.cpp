@@ -303,7 +303,7 @@ TEST(CaseFileErrors, UnknownReferenceWord) {
 
 TEST(CaseFileErrors, CapBaseWiderThanItsSphere) {
   expect_error(kHead + "shell: {type: spherical_cap, base_radius: 90 mm, radius: 80.9 mm}\n",
-               {"shell.base_radius", "90 mm", 3, "cannot exceed the sphere radius"});
+               {"shell.base_radius", "90 mm", 3, "must be smaller than the sphere radius"});
 }
 
 TEST(CaseFileErrors, ShellGeometryKeyOfAnotherType) {

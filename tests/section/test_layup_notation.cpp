@@ -107,6 +107,63 @@ TEST(LayupNotation, RoundTripsRunsAndAwkwardNumbers) {
   expect_round_trip({100, 200, 300});
 }
 
+// Issue 13 item 4: the compact form of a long run or a large repetition must parse back. It
+// printed "[0_2000]" for "[0_1000]2" and "[0_6380]S" for "[0_0290]22S", counts the parser
+// refuses (above 1000); such counts are now written as nested groups.
+TEST(LayupNotation, CompactFormOfLongRunsAndRepetitionsParsesBack) {
+  for (const char* notation : {"[0_1000]2", "[0_0290]22S", "[0/90]1000", "[(0/90)1000]3",
+                               "[0_999/45_1000]2S", "[(0_1000)100]", "[(±45)1000]S"}) {
+    const Angles angles = parse_layup(notation);
+    const std::string compact = format_layup(angles);
+    try {
+      EXPECT_EQ(parse_layup(compact), angles) << notation << " -> " << compact;
+    } catch (const Error& e) {
+      ADD_FAILURE() << notation << " -> " << compact << " refused: " << e.what();
+    }
+  }
+  EXPECT_EQ(format_layup(parse_layup("[0_1000]2")), "[0_1000]S");
+}
+
+// Random long runs and repetitions around the count limit, up to the parser's 100,000 plies.
+TEST(LayupNotation, RoundTripsLongRunsAndRepetitions) {
+  std::mt19937 rng(13);
+  std::uniform_int_distribution<int> run(1, 2500);
+  std::uniform_int_distribution<int> angle(-2, 2);
+  std::uniform_int_distribution<int> parts(1, 4);
+  std::uniform_int_distribution<int> times(1, 30);
+  for (int trial = 0; trial < 100; ++trial) {
+    Angles base;
+    for (int p = parts(rng); p > 0; --p) base.insert(base.end(), run(rng), 45.0 * angle(rng));
+    Angles angles;
+    for (int k = times(rng); k > 0 && angles.size() + base.size() <= 50000; --k)
+      angles.insert(angles.end(), base.begin(), base.end());
+    expect_round_trip(angles);
+    Angles symmetric = angles;
+    symmetric.insert(symmetric.end(), angles.rbegin(), angles.rend());
+    expect_round_trip(symmetric);
+  }
+}
+
+// Issue 13 item 1: nesting is bounded (the parser is recursive; 30,000 levels overflowed the
+// stack of a Release build, 3,476 under AddressSanitizer).
+TEST(LayupNotation, RefusesGroupsNestedTooDeep) {
+  const auto nested = [](int levels) {
+    return "[" + std::string(levels, '(') + "0" + std::string(levels, ')') + "]";
+  };
+  EXPECT_EQ(parse_layup(nested(64)), Angles{0});
+  for (int levels : {65, 4000, 200000}) {
+    try {
+      parse_layup(nested(levels));
+      ADD_FAILURE() << levels << " levels accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(e.reason().find("groups nested deeper than 64 levels at character 66"),
+                std::string::npos)
+          << e.reason().substr(0, 300);
+      EXPECT_LT(e.reason().size(), 200u);  // the string is quoted by its first 80 characters
+    }
+  }
+}
+
 TEST(LayupNotation, FormatRefusesWhatItCannotWrite) {
   EXPECT_THROW(format_layup({}), Error);
   EXPECT_THROW(format_layup({400}), Error);
