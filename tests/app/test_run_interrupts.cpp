@@ -96,10 +96,12 @@ std::set<std::string> files_in(const fs::path& dir) {
   return names;
 }
 
-// The uninterrupted run of small_case(), once for the tests of this file.
+// The uninterrupted run of small_case(), once per test process. ctest runs each test in its own
+// process, several at a time: the directory carries the process id so that two tests of this
+// file never share (and delete) one reference run.
 const fs::path& reference_run() {
   static const fs::path out = [] {
-    const fs::path dir = fresh_dir("interrupt_reference");
+    const fs::path dir = fresh_dir("interrupt_reference_" + std::to_string(getpid()));
     const fs::path c = testing::write_case(dir, small_case());
     const auto r = run_cli(run_args(c, dir / "out"));
     EXPECT_EQ(r.exit_code, 0) << r.output;
