@@ -112,7 +112,7 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
                                     ? Where{c.file, "output.dir", dir.string(), 0}
                                     : Where{"command line", "--out", dir.string(), 0});
 
-  const DofMap dofs = make_dof_map(m.mesh, m.supports);
+  const DofMap dofs = make_dof_map(m.mesh, m.supports, m.displacements);
   StaticSettings settings;
   settings.steps = c.load->steps;
   settings.record_nodes = {m.apex_node()};
