@@ -104,8 +104,8 @@ void read_elements(MshScanner& in, Fields& f,
     const int entity = f.integer("an entity tag");
     const int type = f.integer("an element type");
     const GmshElementType info = gmsh_element_type(type);
-    const std::size_t n = f.count("the number of elements in a block",
-                                  (1 + std::max(info.num_nodes, 1)) * f.size_bytes());
+    // At least a tag and a node each: the element type is checked at the first element.
+    const std::size_t n = f.count("the number of elements in a block", 2 * f.size_bytes());
     const auto phys = physicals.find({dim, entity});
     const std::vector<int>& groups = phys == physicals.end() ? none : phys->second;
     long long nodes[10];
@@ -138,6 +138,8 @@ void read_msh41_sections(MshScanner& in, GmshContent& out) {
   bool have_nodes = false, have_elements = false, have_entities = false;
   while (!in.at_end()) {
     const std::string section(in.token("a section"));
+    const bool data = section == "$Entities" || section == "$Nodes" || section == "$Elements";
+    if (data && f.binary()) in.skip_line_break();  // binary data starts after the header line
     if (section == "$PhysicalNames") {
       read_physical_names(in, out);
     } else if (section == "$Entities") {
