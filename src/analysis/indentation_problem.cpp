@@ -64,6 +64,9 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
       assembler_(model.mesh, dofs_, *model.element, model.law, model.kinematics, options_.threads),
       chart_(model.mesh, dofs_),
       shell_(assembler_, chart_) {
+  SI_REQUIRE(model.displacements.empty(),
+             "non-zero prescribed displacements (`supports: type: displacement`) are not part of "
+             "an indentation run yet; hold the dofs at 0 or use `shellindent static`");
   SI_REQUIRE(!options_.interpolated_traction || model.kinematics == Kinematics::kLinear,
              "the interpolated contact traction is defined for linear kinematics only");
   const Mesh& mesh = model.mesh;

@@ -32,6 +32,7 @@ struct ShellModel {
   std::unique_ptr<ShellElement> element;
   Kinematics kinematics = Kinematics::kNonlinear;
   std::vector<Support> supports;
+  std::vector<PrescribedDisplacement> displacements;  // non-zero ones of `supports:` entries
   Loads loads;  // of the case's `load` section at load factor 1; empty without one
   // Whole-shell value = symmetry_factor * model value, for forces, reactions and energies
   // (4 for a quarter model, else 1).
@@ -43,7 +44,14 @@ struct ShellModel {
 
 // Throws an input error naming the case-file key for a case the model cannot represent: a
 // quarter model of a section that is not specially orthotropic in the model axes
-// (`mesh.symmetry`), an odd-sized or too coarse mesh, a simply supported curved edge.
+// (`mesh.symmetry`), an odd-sized or too coarse mesh, a simply supported curved edge, a mesh file
+// the Gmsh reader refuses, a `supports`/`loads` entry naming a set the mesh does not have.
+//
+// Named sets of the built-in meshes (docs/case-file.md): "apex", "edge" (the whole supported
+// boundary); rectangular plate "x-", "x+", "y-", "y+" (quarter: "x+", "y+"); cylindrical panel
+// "x-", "x+" (straight edges), "y-", "y+" (curved ends), "straight_edges", "curved_ends"
+// (quarter: "x+", "y+"); cap and circular plate "rim"; quarter models "symmetry_x",
+// "symmetry_y". A mesh file brings its physical groups, "apex" and "edge".
 ShellModel build_shell_model(const CaseFile& c);
 
 // The mesh alone (the first step of build_shell_model).

@@ -150,7 +150,7 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   prepare_output_directory(dir, dir_where);
   const OutputLock lock(dir, dir_where);
 
-  const DofMap dofs = make_dof_map(m.mesh, m.supports);
+  const DofMap dofs = make_dof_map(m.mesh, m.supports, m.displacements);
   StaticSettings settings;
   settings.steps = c.load->steps;
   settings.record_nodes = {m.apex_node()};

@@ -11,6 +11,7 @@
 #include "core/units.hpp"
 #include "io/laminate_reader.hpp"
 #include "io/material_reader.hpp"
+#include "io/named_sets_reader.hpp"
 #include "io/plausible_range.hpp"
 #include "io/yaml_reader.hpp"
 
@@ -29,6 +30,7 @@ const Choices<ElementType> kElements{{"mitc4", ElementType::kMitc4},
                                      {"mitc4-plain", ElementType::kMitc4Plain},
                                      {"bernstein4", ElementType::kBernstein4}};
 const Choices<Symmetry> kSymmetries{{"full", Symmetry::kFull}, {"quarter", Symmetry::kQuarter}};
+const Choices<bool> kGradings{{"uniform", false}, {"graded", true}};
 const Choices<Kinematics> kKinematics{{"linear", Kinematics::kLinear},
                                       {"nonlinear", Kinematics::kNonlinear}};
 const Choices<IndenterShape> kShapes{{"sphere", IndenterShape::kSphere},
@@ -61,10 +63,17 @@ std::optional<MapReader> section(const MapReader& top, const std::string& key) {
 
 // A section's geometry keys are required once the section is written: a partly written shell
 // silently completed with the paper's numbers would be a surprise.
-ShellSpec read_shell(const MapReader& top) {
+// With `mesh.file` the geometry comes from the file: `shell` may only give the default edge.
+ShellSpec read_shell(const MapReader& top, bool imported) {
   ShellSpec shell;
+  shell.supports = read_supports(top);
   const auto map = section(top, "shell");
   if (!map) return shell;
+  if (imported) {
+    map->allow_only({"edge"});
+    shell.edge = map->choice_or("edge", kEdges, shell.edge);
+    return shell;
+  }
   shell.type = map->choice("type", kShellTypes);
   switch (shell.type) {
     case ShellType::kSphericalCap:
@@ -97,11 +106,43 @@ ShellSpec read_shell(const MapReader& top) {
   return shell;
 }
 
-MeshSpec read_mesh(const MapReader& top) {
+bool has_mesh_file(const MapReader& top) {
+  return top.has("mesh") && top.at("mesh").IsMap() && top.at("mesh")["file"];
+}
+
+// mesh.file, resolved against the directory of the case file, must exist now (nothing is run or
+// written for a case whose mesh cannot be read).
+void read_mesh_file(const MapReader& map, MeshSpec& mesh) {
+  map.allow_only({"element", "file", "reorient", "flip", "symmetry"});
+  const std::filesystem::path file = map.scalar("file");
+  const std::filesystem::path base = std::filesystem::path(map.where().file).parent_path();
+  mesh.file = (file.is_absolute() ? file : base / file).string();
+  if (!std::filesystem::is_regular_file(mesh.file))
+    throw_input("cannot open the mesh file " + mesh.file +
+                    " (a relative path is taken from the "
+                    "case file's directory)",
+                map.where("file"));
+  mesh.reorient = map.choice_or("reorient", kBooleans, mesh.reorient);
+  mesh.flip = map.choice_or("flip", kBooleans, mesh.flip);
+}
+
+MeshSpec read_mesh(const MapReader& top, ShellType shell) {
   MeshSpec mesh;
   const auto map = section(top, "mesh");
   if (!map) return mesh;
-  map->allow_only({"element", "size_apex", "size_edge", "refine_radius", "symmetry"});
+  if (map->has("file")) {
+    read_mesh_file(*map, mesh);
+  } else {
+    map->allow_only({"element", "size_apex", "size_edge", "refine_radius", "symmetry", "grading"});
+    mesh.graded = map->choice_or("grading", kGradings, mesh.graded);
+    const bool grid =
+        shell == ShellType::kRectangularPlate || shell == ShellType::kCylindricalPanel;
+    if (map->has("grading") && !grid && !mesh.graded)
+      throw_input(
+          "the O-grid of a cap or circular plate is always graded; for a uniform mesh set "
+          "size_edge equal to size_apex",
+          map->where("grading"));
+  }
   mesh.element = map->choice_or("element", kElements, mesh.element);
   mesh.size_apex = map->positive_or("size_apex", Dimension::kLength, mesh.size_apex);
   mesh.size_edge = map->positive_or("size_edge", Dimension::kLength, mesh.size_edge);
@@ -295,12 +336,22 @@ OutputSpec read_output(const MapReader& top) {
 }
 
 // The load section is optional; once written, its magnitude is required (no paper default).
+// With a `loads:` list the `load` section may be left out, or give only `steps`.
 std::optional<LoadSpec> read_load(const MapReader& top) {
   const auto map = section(top, "load");
-  if (!map) return std::nullopt;
   LoadSpec load;
-  load.type = map->choice("type", kLoadTypes);
+  load.named = read_named_loads(top);
+  if (!map) {
+    if (load.named.empty()) return std::nullopt;
+    load.type = LoadType::kNone;
+    return load;
+  }
+  load.type =
+      load.named.empty() || map->has("type") ? map->choice("type", kLoadTypes) : LoadType::kNone;
   switch (load.type) {
+    case LoadType::kNone:
+      map->allow_only({"steps"});
+      break;
     case LoadType::kApexForce:
       map->allow_only({"type", "force", "steps"});
       load.force = map->positive("force", Dimension::kForce);
@@ -353,14 +404,15 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   if (root.IsNull()) throw_input("the case file is empty", Where{file_label, "", "", 0});
   const MapReader top(root, Where{file_label, "", "", 0});
   top.allow_only({"material", "materials", "laminate", "shell", "mesh", "kinematics", "indenter",
-                  "contact", "path", "output", "load"});
+                  "contact", "path", "output", "load", "loads", "supports"});
   top.at("laminate");  // say it is missing before reading the rest
   const MaterialTable materials = read_materials(top);
   const Kinematics kinematics = top.choice_or("kinematics", kKinematics, Kinematics::kNonlinear);
+  const ShellSpec shell = read_shell(top, has_mesh_file(top));
   return CaseFile{read_laminate(top.at("laminate"), top.where("laminate"), materials),
                   materials.default_material,
-                  read_shell(top),
-                  read_mesh(top),
+                  shell,
+                  read_mesh(top, shell.type),
                   kinematics,
                   read_indenter(top),
                   read_contact(top, kinematics),

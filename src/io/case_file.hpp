@@ -12,6 +12,8 @@
 
 #include "core/linalg.hpp"
 #include "material/material.hpp"
+#include "model/named_loads.hpp"
+#include "model/named_supports.hpp"
 #include "model/symmetry.hpp"
 #include "section/laminate.hpp"
 #include "shell/kinematics.hpp"
@@ -31,7 +33,8 @@ struct ShellSpec {
   double length_y = 0;        // mm, rectangular plate
   double length = 0;          // mm, cylindrical panel: axial length
   double angle_deg = 0;       // cylindrical panel: opening angle
-  EdgeCondition edge = EdgeCondition::kClamped;
+  EdgeCondition edge = EdgeCondition::kClamped;  // the default for every edge `supports` omits
+  std::vector<NamedSupportSpec> supports;        // top-level `supports:`, on named sets
 };
 
 // mitc4 = MITC4 + EAS-4 membrane (the default), mitc4-plain = MITC4 with the bilinear membrane,
@@ -45,6 +48,14 @@ struct MeshSpec {
   double size_edge = 2.0;       // mm
   double refine_radius = 13.0;  // mm, measured from the indentation point in plan
   Symmetry symmetry = Symmetry::kFull;
+  // Rectangular plates and cylindrical panels: graded like the cap (size_apex within
+  // refine_radius, growing to size_edge) instead of uniform at size_apex.
+  bool graded = false;
+  // A mesh from a Gmsh file (path resolved against the case file's directory; empty: the
+  // built-in mesh of `shell`), with the reader's options (model/gmsh_reader.hpp).
+  std::string file;
+  bool reorient = false;
+  bool flip = false;
 };
 
 enum class IndenterShape { kSphere, kSuperquadric, kFlatPunch, kCylinder };
@@ -104,7 +115,8 @@ struct OutputSpec {
   std::vector<OutputFormat> formats{OutputFormat::kCsv, OutputFormat::kJson, OutputFormat::kVtu};
 };
 
-enum class LoadType { kApexForce, kPressure };
+// kNone: no apex force or uniform pressure, only the named `loads`.
+enum class LoadType { kApexForce, kPressure, kNone };
 
 // A load-controlled run (`shellindent static`): the load grows from 0 to its full value in
 // `steps` equal increments. No contact: the indenter, contact and path sections are not used.
@@ -116,6 +128,7 @@ struct LoadSpec {
                           //    on the cap's convex side, i.e. towards -z at the apex)
   int steps = 10;         // >= 1
   bool follower = false;  // pressure only: follows the deformed surface
+  std::vector<NamedLoadSpec> named;  // top-level `loads:`, on named sets
 };
 
 struct CaseFile {

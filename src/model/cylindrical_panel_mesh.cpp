@@ -36,20 +36,36 @@ Mesh cylindrical_panel_mesh(double radius, double length, double half_angle_deg,
   const double half_angle = half_angle_deg * kPi / 180;
   const int i_crown = full ? n_circ / 2 : 0, j_mid = full ? n_axial / 2 : 0;
   // Offsets from the mid-lines in integers, so that the mid-lines are exactly theta = 0, y = 0.
-  const auto theta_at = [&](int i) {
-    return half_angle * (i - i_crown) / static_cast<double>(n_circ - i_crown);
+  std::vector<double> thetas, ys;
+  for (int i = 0; i <= n_circ; ++i)
+    thetas.push_back(half_angle * (i - i_crown) / static_cast<double>(n_circ - i_crown));
+  for (int j = 0; j <= n_axial; ++j)
+    ys.push_back(length / 2 * (j - j_mid) / static_cast<double>(n_axial - j_mid));
+  return cylindrical_panel_mesh(radius, thetas, ys, part);
+}
+
+Mesh cylindrical_panel_mesh(double radius, const std::vector<double>& thetas,
+                            const std::vector<double>& ys, PanelPart part) {
+  const bool full = part == PanelPart::kFull;
+  const auto valid = [full](const std::vector<double>& s) {
+    bool ok = s.size() >= 2 && (full ? s.size() % 2 == 1 : s.front() == 0);
+    for (std::size_t k = 1; k < s.size() && ok; ++k) ok = s[k] > s[k - 1];
+    return ok && (!full || s[s.size() / 2] == 0);
   };
-  const auto y_at = [&](int j) {
-    return length / 2 * (j - j_mid) / static_cast<double>(n_axial - j_mid);
-  };
+  if (!valid(thetas) || !valid(ys))
+    throw_input(full ? "panel stations must increase, be odd in number and have 0 in the middle"
+                     : "panel stations must increase from 0");
+  const int n_circ = static_cast<int>(thetas.size()) - 1;
+  const int n_axial = static_cast<int>(ys.size()) - 1;
+  const int i_crown = full ? n_circ / 2 : 0, j_mid = full ? n_axial / 2 : 0;
   // u = theta, v = y: x_theta cross x_y = R (sin theta, 0, cos theta), outward.
   Mesh mesh = structured_grid(n_circ, n_axial, [&](int i, int j) {
-    const double t = theta_at(i);
-    return Vector3d(radius * std::sin(t), y_at(j), radius * std::cos(t));
+    const double t = thetas[i];
+    return Vector3d(radius * std::sin(t), ys[j], radius * std::cos(t));
   });
   for (int j = 0; j <= n_axial; ++j) {
     for (int i = 0; i <= n_circ; ++i) {
-      const double t = theta_at(i);
+      const double t = thetas[i];
       mesh.directors.push_back(Vector3d(std::sin(t), 0, std::cos(t)));
     }
   }

@@ -31,6 +31,13 @@ enum class PanelPart { kFull, kQuarter };
 Mesh cylindrical_panel_mesh(double radius, double length, double half_angle_deg, int n_axial,
                             int n_circ, PanelPart part = PanelPart::kFull);
 
+// The same with node lines at the given stations: angles theta (rad, from the crown) and axial
+// positions y, strictly increasing. kFull needs lists symmetric about 0 with an odd number of
+// stations (0 is then the middle one), kQuarter lists starting at 0. For graded meshes
+// (graded_stations.hpp).
+Mesh cylindrical_panel_mesh(double radius, const std::vector<double>& thetas,
+                            const std::vector<double>& ys, PanelPart part);
+
 // Octant of the pinched cylinder (linear.md: R = 300, L = 600): the quarter panel with
 // half-angle 90 deg and length L, i.e. theta in [0, 90] deg from the top (x = 0, z = R) to the
 // side (z = 0), y from the load section (y = 0) to the diaphragm (y = L/2). Besides the panel's

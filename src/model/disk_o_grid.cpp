@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "model/graded_stations.hpp"
 #include "model/structured_grid.hpp"
 
 namespace si {
@@ -25,29 +26,6 @@ double target_size(const DiskGrading& g, int n, double s) {
     size += t * (g.size_edge - g.size_center);
   }
   return std::min(size, kMaxRadialStretch * kPi * s / (4 * n));
-}
-
-// Stations s0 = t_0 < ... < t_m = s1 with m = round(integral of ds/size) elements, placed so
-// that each element holds the same share of that integral (equidistribution).
-std::vector<double> graded_stations(double s0, double s1,
-                                    const std::function<double(double)>& size) {
-  const int samples = 2000;
-  std::vector<double> s(samples + 1), count(samples + 1, 0.0);
-  for (int k = 0; k <= samples; ++k) s[k] = s0 + (s1 - s0) * k / samples;
-  for (int k = 1; k <= samples; ++k) {
-    count[k] = count[k - 1] + 0.5 * (1 / size(s[k - 1]) + 1 / size(s[k])) * (s[k] - s[k - 1]);
-  }
-  const int m = std::max(1, static_cast<int>(std::lround(count.back())));
-  std::vector<double> stations{s0};
-  int k = 1;
-  for (int i = 1; i < m; ++i) {
-    const double wanted = count.back() * i / m;
-    while (count[k] < wanted) ++k;
-    const double f = (wanted - count[k - 1]) / (count[k] - count[k - 1]);
-    stations.push_back(s[k - 1] + f * (s[k] - s[k - 1]));
-  }
-  stations.push_back(s1);
-  return stations;
 }
 
 // Points of a radial line from `inner` (on the square) to `outer` (on the circle), at the

@@ -1,27 +1,46 @@
-// Reader of Gmsh ASCII MSH 4.1 files of quadrilateral shell meshes
-// (format: https://gmsh.info/doc/texinfo/gmsh.html#MSH-file-format, section "MSH file format
-// version 4.1").
+// Reader of Gmsh MSH files of quadrilateral shell meshes: versions 4.1 (text and binary) and 2.2
+// (text) (format: https://gmsh.info/doc/texinfo/gmsh.html#MSH-file-format).
 //
-// Read: $MeshFormat (must be 4.1 ASCII), $PhysicalNames, $Entities, $Nodes, $Elements; other
-// sections are skipped. 4-node quadrangles (type 3) become the elements. Points (type 15) and
-// lines (types 1, 8) on entities that carry physical groups become node sets named after the
-// group ("physical_<dim>_<tag>" when the group has no name); other point/line elements are
-// ignored. Any other surface element (triangles, 8/9-node quadrangles) or volume element is
-// refused. Nodes are renumbered densely in the order of their Gmsh tags, keeping only those of
-// quadrangles; directors are the averaged element normals (compute_directors_from_elements),
-// so the side the directors point to is the one from which Gmsh's node order is
-// counter-clockwise - use flip_orientation (mesh.hpp) to turn it over.
+// What becomes of the file:
+//  * 4-node quadrangles (type 3) are the elements; nodes are renumbered densely in the order of
+//    their Gmsh tags, keeping those of quadrangles only.
+//  * Physical groups become node sets named after the group ("physical_<dim>_<tag>" when it has
+//    no name): points and lines give the nodes of their elements, surfaces give their nodes and
+//    also an element set (a loaded face, the contact face).
+//  * Directors are the area-weighted averages of the element normals
+//    (compute_directors_from_elements), so they point to the side from which the node order is
+//    counter-clockwise; the outer face (the indenter's side, the top ply) is that side.
 //
-// Errors (si::Error, kind kInput) name the file and the line; the mesh is validated with
-// check_mesh, including consistent orientation of neighbouring elements.
+// Refused, with the file, the line (text) or byte (binary) and the Gmsh element or node tag:
+// an unsupported version or byte order, triangles (there is no triangle shell), higher-order or
+// volume elements, unknown element types, truncated sections, counts that cannot fit in the
+// file (nothing is allocated beyond what the file could describe), node tags defined twice or
+// referenced but not defined, physical-group nodes outside the quadrangles, a non-manifold edge,
+// neighbours with opposite orientation (unless `reorient`), a surface that cannot be oriented,
+// and degenerate, inverted or badly distorted elements (check_element, mesh_quality.hpp).
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "model/mesh.hpp"
 
 namespace si {
 
-Mesh read_gmsh_msh4(const std::string& path);
+struct GmshReadOptions {
+  // Reverse elements whose orientation disagrees with their neighbours' (propagated from the
+  // lowest-tagged element of each connected piece) instead of refusing the file; each reversal
+  // is reported in ImportedMesh::warnings.
+  bool reorient = false;
+  // Reverse every element after reading: the directors then point to the other side.
+  bool flip = false;
+};
+
+struct ImportedMesh {
+  Mesh mesh;
+  std::vector<std::string> warnings;
+};
+
+ImportedMesh read_gmsh_mesh(const std::string& path, const GmshReadOptions& options = {});
 
 }  // namespace si

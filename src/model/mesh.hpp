@@ -8,7 +8,8 @@
 //    generator knows the surface, else the area-weighted average of the element normals;
 //  * elements list their nodes counter-clockwise seen from the tip of the director, so the
 //    element normal (x_xi cross x_eta of the bilinear map) agrees with the directors;
-//  * every node set holds sorted, unique node indices.
+//  * every node set holds sorted, unique node indices; element sets (surface regions of an
+//    imported mesh, e.g. a loaded face) hold sorted, unique element indices.
 #pragma once
 
 #include <array>
@@ -26,6 +27,7 @@ struct Mesh {
   std::vector<Vector3d> directors;
   std::vector<std::array<int, 4>> elements;
   std::map<std::string, std::vector<int>> node_sets;
+  std::map<std::string, std::vector<int>> element_sets;
 
   int num_nodes() const { return static_cast<int>(nodes.size()); }
   int num_elements() const { return static_cast<int>(elements.size()); }

@@ -25,6 +25,12 @@ void require_divisions(int n, int at_least, const char* key) {
   }
 }
 
+void require_stations(const std::vector<double>& s, const char* key) {
+  bool increasing = s.size() >= 2;
+  for (std::size_t k = 1; k < s.size() && increasing; ++k) increasing = s[k] > s[k - 1];
+  if (!increasing) throw_input("needs at least 2 strictly increasing stations", {"", key, ""});
+}
+
 }  // namespace
 
 Mesh rectangular_plate_mesh(double lx, double ly, int nx, int ny) {
@@ -32,8 +38,17 @@ Mesh rectangular_plate_mesh(double lx, double ly, int nx, int ny) {
   require_positive(ly, "ly");
   require_divisions(nx, 1, "nx");
   require_divisions(ny, 1, "ny");
-  Mesh mesh =
-      structured_grid(nx, ny, [&](int i, int j) { return Vector3d(lx * i / nx, ly * j / ny, 0); });
+  std::vector<double> xs, ys;
+  for (int i = 0; i <= nx; ++i) xs.push_back(lx * i / nx);
+  for (int j = 0; j <= ny; ++j) ys.push_back(ly * j / ny);
+  return rectangular_plate_mesh(xs, ys);
+}
+
+Mesh rectangular_plate_mesh(const std::vector<double>& xs, const std::vector<double>& ys) {
+  require_stations(xs, "xs");
+  require_stations(ys, "ys");
+  const int nx = static_cast<int>(xs.size()) - 1, ny = static_cast<int>(ys.size()) - 1;
+  Mesh mesh = structured_grid(nx, ny, [&](int i, int j) { return Vector3d(xs[i], ys[j], 0); });
   mesh.directors.assign(mesh.nodes.size(), Vector3d::UnitZ());
   const auto id = [nx](int i, int j) { return i + (nx + 1) * j; };
   std::vector<int> x0, x1, y0, y1;

@@ -12,6 +12,12 @@ namespace si {
 // Used for the Sze cantilever strips (10 x 1, 16 x 1) and the Navier laminate plates.
 Mesh rectangular_plate_mesh(double lx, double ly, int nx, int ny);
 
+// The same with node lines at the given stations (strictly increasing, at least 2 each): node
+// (i, j) is (xs[i], ys[j], 0). Node sets as above ("edge_x0" at xs.front(), ...); "center" is the
+// middle node when both lists have an odd number of stations. For graded meshes
+// (graded_stations.hpp).
+Mesh rectangular_plate_mesh(const std::vector<double>& xs, const std::vector<double>& ys);
+
 // Disk of the given radius centred at the origin, O-grid with radial grading (disk_o_grid.hpp).
 // Node sets: "edge" (the rim), "center" (the node at the origin), and for the quarter model
 // (x >= 0, y >= 0) "symmetry_x" (x = 0) and "symmetry_y" (y = 0).

@@ -50,7 +50,7 @@ inline StaticRun run_static_case(const std::string& yaml) {
   const CaseFile c = parse_case_file(yaml, "point_load_case");
   run.model = build_shell_model(c);
   const ShellModel& m = run.model;
-  const DofMap dofs = make_dof_map(m.mesh, m.supports);
+  const DofMap dofs = make_dof_map(m.mesh, m.supports, m.displacements);
   StaticSettings settings;
   settings.steps = c.load->steps;
   settings.tolerance = 1e-10;

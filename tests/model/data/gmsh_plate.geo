@@ -1,0 +1,11 @@
+// Gmsh 4.8 script of the reader fixtures: gmsh -2 gmsh_plate.geo -format msh41 [-bin] / -format msh22
+// 2 x 1 rectangle, 4 x 2 quads, physical groups for tests
+Point(1) = {0, 0, 0}; Point(2) = {2, 0, 0}; Point(3) = {2, 1, 0}; Point(4) = {0, 1, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Transfinite Curve{1, 3} = 5; Transfinite Curve{2, 4} = 3;
+Transfinite Surface{1}; Recombine Surface{1};
+Physical Curve("clamped") = {4};
+Physical Curve("loaded edge") = {2};
+Physical Point("corner") = {3};
+Physical Surface("plate") = {1};
