@@ -10,8 +10,8 @@
 #include <memory>
 
 #include "model/assembler.hpp"
-#include "model/linear_solver.hpp"
 #include "model/supports.hpp"
+#include "solvers/linear_solver.hpp"
 #include "spring_net_element.hpp"
 #include "test_meshes.hpp"
 

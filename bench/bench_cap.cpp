@@ -10,11 +10,11 @@
 
 #include <string>
 
-#include "analysis/shell_model.hpp"
 #include "io/case_file.hpp"
 #include "model/assembler.hpp"
-#include "model/linear_solver.hpp"
+#include "model/shell_model.hpp"
 #include "model/supports.hpp"
+#include "solvers/linear_solver.hpp"
 
 namespace si {
 namespace {

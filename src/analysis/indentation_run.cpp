@@ -7,17 +7,17 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
-#include "analysis/active_set_solver.hpp"
 #include "analysis/critical_force.hpp"
-#include "analysis/linear_indentation.hpp"
 #include "analysis/local_contact.hpp"
 #include "contact/indenter_factory.hpp"
 #include "continuation/checkpoint.hpp"
 #include "continuation/kinsol_corrector.hpp"
 #include "continuation/natural.hpp"
 #include "continuation/pseudo_arclength.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
+#include "indentation/active_set_solver.hpp"
+#include "indentation/linear_indentation.hpp"
 #include "section/vam_section.hpp"
 
 namespace si {

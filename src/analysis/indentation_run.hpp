@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "analysis/indentation_problem.hpp"
-#include "analysis/shell_model.hpp"
 #include "continuation/branch.hpp"
+#include "indentation/indentation_problem.hpp"
 #include "io/case_file.hpp"
+#include "model/shell_model.hpp"
 
 namespace si {
 

@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "analysis/chart_assembly.hpp"
 #include "continuation/problem.hpp"
 #include "model/assembler.hpp"
+#include "model/chart_assembly.hpp"
 #include "model/dof_map.hpp"
-#include "model/linear_solver.hpp"
 #include "model/loads.hpp"
 #include "model/shell_chart.hpp"
 #include "model/supports.hpp"
+#include "solvers/linear_solver.hpp"
 
 namespace si {
 

@@ -10,11 +10,11 @@
 #include <optional>
 #include <stdexcept>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "fitting/builtin_models.hpp"
 #include "fitting/linear_fit.hpp"
 #include "fitting/polynomial_degree.hpp"
-#include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
 #include "io/did_you_mean.hpp"
 

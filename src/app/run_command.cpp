@@ -11,11 +11,11 @@
 
 #include "analysis/indentation_run.hpp"
 #include "analysis/local_contact.hpp"
-#include "analysis/result_fields.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
 #include "io/output_directory.hpp"
 #include "io/path_results.hpp"
+#include "io/result_fields.hpp"
 #include "io/vtu_writer.hpp"
 
 namespace si {

@@ -8,13 +8,13 @@
 #include <sstream>
 #include <vector>
 
-#include "analysis/result_fields.hpp"
-#include "analysis/shell_model.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
 #include "io/output_directory.hpp"
+#include "io/result_fields.hpp"
 #include "io/vtu_writer.hpp"
+#include "model/shell_model.hpp"
 #include "model/static_solver.hpp"
 
 namespace si {

@@ -18,10 +18,10 @@
 #include <optional>
 #include <sstream>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "fitting/builtin_models.hpp"
 #include "fitting/curve_model.hpp"
-#include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
 #include "io/output_directory.hpp"
 #include "io/study_file.hpp"

@@ -73,7 +73,7 @@ enum class ContactSolver { kKinsol, kActiveSet };
 enum class LocalContactModel { kNone, kHertz, kYangSun, kVam };
 
 // Contact traction: nodal Lagrange multipliers (forces), or the paper's interpolated traction
-// with weighted gaps (analysis/interpolated_contact.hpp; linear kinematics only).
+// with weighted gaps (indentation/interpolated_contact.hpp; linear kinematics only).
 enum class ContactTraction { kNodal, kInterpolated };
 
 struct ContactSpec {

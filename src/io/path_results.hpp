@@ -12,7 +12,7 @@
 //     column
 //     `interpolated` (0: a converged point, 1: interpolated); where a snap-back passes a depth
 //     several times, its first passage
-// Text is produced here; the caller writes it atomically (io/atomic_file.hpp).
+// Text is produced here; the caller writes it atomically (core/atomic_file.hpp).
 #pragma once
 
 #include <nlohmann/json.hpp>

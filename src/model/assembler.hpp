@@ -20,9 +20,9 @@
 #include <vector>
 
 #include "model/dof_map.hpp"
-#include "model/linear_solver.hpp"
 #include "model/mesh.hpp"
 #include "shell/shell_element.hpp"
+#include "solvers/linear_solver.hpp"
 
 namespace si {
 

@@ -22,9 +22,9 @@
 #include <vector>
 
 #include "model/dof_map.hpp"
-#include "model/linear_solver.hpp"
 #include "model/mesh.hpp"
 #include "shell/director.hpp"
+#include "solvers/linear_solver.hpp"
 
 namespace si {
 

@@ -9,8 +9,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "../indentation/indentation_test_support.hpp"
 #include "analysis/indentation_run.hpp"
-#include "indentation_test_support.hpp"
 #include "io/csv_table.hpp"
 #include "io/path_results.hpp"
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "../indentation/indentation_test_support.hpp"
 #include "analysis/indentation_run.hpp"
-#include "indentation_test_support.hpp"
 
 namespace si {
 namespace {

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "analysis/shell_model.hpp"
 #include "io/case_file.hpp"
 #include "model/assembler.hpp"
+#include "model/shell_model.hpp"
 #include "model/static_solver.hpp"
 
 namespace si::testing {

@@ -22,7 +22,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "../analysis/indentation_test_support.hpp"
+#include "../indentation/indentation_test_support.hpp"
 #include "../verification_record.hpp"
 #include "analysis/indentation_run.hpp"
 #include "analysis/local_contact.hpp"
