@@ -4,11 +4,16 @@
 // Meaning of every field: docs/theory/continuation.md.
 #pragma once
 
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
 
 namespace si::cont {
+
+// Writes `content` to the file `path`, replacing it atomically (readers see the old file or the
+// new one, never a part). The caller's: the library does no file output of its own.
+using FileWriter = std::function<void(const std::string& path, const std::string& content)>;
 
 // The KINSOL Newton corrector (kinsol_corrector.hpp). Convergence: ||F||_inf <= tol with
 // tol = relative_tolerance * max(||F(x_start)||_inf, residual_scale).
@@ -89,8 +94,9 @@ struct Settings {
   int event_max_iterations = 80;
 
   // Checkpoints (checkpoint.hpp): written atomically every checkpoint_interval accepted steps
-  // and at the end of the run; empty path = none.
+  // and at the end of the run, by checkpoint_writer (required with a path); empty path = none.
   std::string checkpoint_path;
+  FileWriter checkpoint_writer;
   int checkpoint_interval = 0;
   // false: the checkpoint keeps x only for the current and previous state, not for every point
   // and event (a resumed branch then has empty x before the checkpoint and in the events found

@@ -254,7 +254,7 @@ class Tracer {
 
   void save_state() const {
     save_checkpoint(settings_.checkpoint_path, {stepper_.method(), branch_, state_},
-                    settings_.checkpoint_keeps_x);
+                    settings_.checkpoint_keeps_x, settings_.checkpoint_writer);
   }
 
   Problem& problem_;

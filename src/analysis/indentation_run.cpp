@@ -229,6 +229,9 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   r.method = cont::method_name(settings.method);
   r.monitor_names = s.problem->monitor_names();
   settings.checkpoint_path = control.checkpoint;
+  settings.checkpoint_writer = [](const std::string& path, const std::string& text) {
+    write_file_atomically(path, text);
+  };
   settings.checkpoint_interval = control.checkpoint.empty() ? 0 : control.checkpoint_interval;
   settings.checkpoint_keeps_x = false;  // the points live in the sidecar
   PathRecorder rec(r, callback);
