@@ -23,7 +23,8 @@
 namespace si {
 namespace {
 
-IndentationOptions options_of(const CaseFile& c, int threads, const std::string& linear_solver) {
+IndentationOptions options_of(const IndentationCase& c, int threads,
+                              JacobianSolverKind linear_solver) {
   IndentationOptions o;
   o.linear_solver = linear_solver;
   o.contact_offset = contact_face_offset(c);
@@ -68,7 +69,7 @@ class PathRecorder {
   const PathCallback& callback_;
 };
 
-void finish(PathResult& r, bool completed, const std::string& status, const std::string& reason) {
+void finish(PathResult& r, bool completed, RunStatus status, const std::string& reason) {
   r.completed = completed;
   r.status = status;
   r.reason = reason;
@@ -79,39 +80,39 @@ void finish(PathResult& r, bool completed, const std::string& status, const std:
 using DepthSolve = std::function<std::string(double h, cont::Vector& z, int& iterations)>;
 
 // The depth grid, one solve per depth, from the undeformed start.
-PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback,
-                          const std::string& method, const DepthSolve& solve) {
+PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback, RunMethod method,
+                          const DepthSolve& solve) {
   PathResult r;
   r.method = method;
   r.monitor_names = s.problem->monitor_names();
   PathRecorder rec(r, callback);
   cont::Vector z = s.problem->initial_point();
   if (!rec.add(*s.problem, z, 0.0, 0, 0.0)) {
-    finish(r, false, "stopped", "stopped by the user");
+    finish(r, false, RunStatus::kStopped, "stopped by the user");
     return r;
   }
   double previous = 0;
-  for (double h : depth_grid(s.case_file.path)) {
+  for (double h : depth_grid(s.spec.path)) {
     int iterations = 0;
     const std::string failure = solve(h, z, iterations);
     if (!failure.empty()) {
-      finish(r, false, "failed", "depth " + std::to_string(h) + " mm: " + failure);
+      finish(r, false, RunStatus::kFailed, "depth " + std::to_string(h) + " mm: " + failure);
       return r;
     }
     if (!rec.add(*s.problem, z, h, iterations, h - previous)) {
-      finish(r, false, "stopped", "stopped by the user");
+      finish(r, false, RunStatus::kStopped, "stopped by the user");
       return r;
     }
     previous = h;
   }
-  finish(r, true, "completed", "");
+  finish(r, true, RunStatus::kCompleted, "");
   return r;
 }
 
 // Linear kinematics: each depth of the grid independently, by the fast path.
 PathResult run_linear(IndentationSetup& s, const PathCallback& callback) {
   LinearIndentation fast(*s.problem);
-  return run_depth_grid(s, callback, "linear fast path",
+  return run_depth_grid(s, callback, RunMethod::kLinearFastPath,
                         [&](double h, cont::Vector& z, int& iterations) -> std::string {
                           try {
                             z = fast.solve(h);
@@ -128,21 +129,42 @@ PathResult run_linear(IndentationSetup& s, const PathCallback& callback) {
 // solved again while the candidate set grows (as the continuation library does).
 PathResult run_active_set(IndentationSetup& s, const PathCallback& callback) {
   IndentationProblem& p = *s.problem;
-  return run_depth_grid(
-      s, callback, "active_set", [&](double h, cont::Vector& z, int& iterations) -> std::string {
-        // Tolerance: 1e-10 of the force a gap of h would carry, as for
-        // KINSOL (the force at the start, zero, is no scale).
-        const double tol = 1e-10 * std::max(p.force_scale(z), p.stiffness_scale() * h);
-        ActiveSetResult a = solve_active_set(p, z, h, tol);
-        iterations = a.iterations;
-        for (int round = 0; a.converged && round < 10 && p.adapt(z, h); ++round)
-          a = solve_active_set(p, z, h, tol);
-        return a.converged ? "" : a.reason;
-      });
+  return run_depth_grid(s, callback, RunMethod::kActiveSet,
+                        [&](double h, cont::Vector& z, int& iterations) -> std::string {
+                          // Tolerance: 1e-10 of the force a gap of h would carry, as for
+                          // KINSOL (the force at the start, zero, is no scale).
+                          const double tol =
+                              1e-10 * std::max(p.force_scale(z), p.stiffness_scale() * h);
+                          ActiveSetResult a = solve_active_set(p, z, h, tol);
+                          iterations = a.iterations;
+                          for (int round = 0; a.converged && round < 10 && p.adapt(z, h); ++round)
+                            a = solve_active_set(p, z, h, tol);
+                          return a.converged ? "" : a.reason;
+                        });
+}
+
+RunStatus run_status(cont::Status s) {
+  switch (s) {
+    case cont::Status::kCompleted:
+      return RunStatus::kCompleted;
+    case cont::Status::kReachedBound:
+      return RunStatus::kReachedBound;
+    case cont::Status::kMaxSteps:
+      return RunStatus::kMaxSteps;
+    case cont::Status::kStepTooSmall:
+      return RunStatus::kStepTooSmall;
+    case cont::Status::kStoppedByCallback:
+      return RunStatus::kStopped;
+    case cont::Status::kStartFailed:
+      return RunStatus::kStartFailed;
+    case cont::Status::kRunning:
+      break;
+  }
+  return RunStatus::kFailed;
 }
 
 cont::Settings continuation_settings(const IndentationSetup& s) {
-  const PathSpec& path = s.case_file.path;
+  const PathSpec& path = s.spec.path;
   cont::Settings c;
   c.method =
       path.method == PathMethod::kNatural ? cont::Method::kNatural : cont::Method::kPseudoArclength;
@@ -226,7 +248,8 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
                             const PathControl& control) {
   PathResult r;
   cont::Settings settings = continuation_settings(s);
-  r.method = cont::method_name(settings.method);
+  r.method =
+      settings.method == cont::Method::kNatural ? RunMethod::kNatural : RunMethod::kPseudoArclength;
   r.monitor_names = s.problem->monitor_names();
   settings.checkpoint_path = control.checkpoint;
   settings.checkpoint_writer = [](const std::string& path, const std::string& text) {
@@ -254,13 +277,13 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   }
   r.events = b.events;
   const bool ok = b.status == cont::Status::kCompleted || b.status == cont::Status::kReachedBound;
-  finish(r, ok, cont::status_name(b.status), b.reason);
+  finish(r, ok, run_status(b.status), b.reason);
   return r;
 }
 
 }  // namespace
 
-IndenterPose default_indenter_pose(const CaseFile& c, const ShellModel& model) {
+IndenterPose default_indenter_pose(const IndentationCase& c, const ShellModel& model) {
   IndenterPose pose;
   pose.direction = c.indenter.direction;
   pose.axis = c.indenter.axis;
@@ -275,27 +298,27 @@ IndenterPose default_indenter_pose(const CaseFile& c, const ShellModel& model) {
   return pose;
 }
 
-IndentationSetup::IndentationSetup(CaseFile c, int threads, const std::string& linear_solver)
-    : case_file(std::move(c)), model(build_shell_model(case_file)) {
-  pose = default_indenter_pose(case_file, model);
+IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolverKind linear_solver)
+    : spec(std::move(c)), model(build_shell_model(spec)) {
+  pose = default_indenter_pose(spec, model);
   try {
-    indenter = make_indenter(case_file.indenter, pose);
+    indenter = make_indenter(spec.indenter, pose);
   } catch (const Error& e) {
-    throw e.within(Where{case_file.file, "indenter", "", 0});
+    throw e.within(Where{spec.file, "indenter", "", 0});
   }
   try {
     problem = std::make_unique<IndentationProblem>(model, *indenter, pose.direction,
-                                                   options_of(case_file, threads, linear_solver));
+                                                   options_of(spec, threads, linear_solver));
   } catch (const Error& e) {
     const auto text = [](const Vector3d& v) {
       char buf[96];
       std::snprintf(buf, sizeof buf, "[%g, %g, %g]", v.x(), v.y(), v.z());
       return std::string(buf);
     };
-    const std::string where = case_file.indenter.position ? "indenter.position" : "indenter";
+    const std::string where = spec.indenter.position ? "indenter.position" : "indenter";
     const std::string value = text(pose.position) + " mm, direction " + text(pose.direction);
     // The problem names `indenter`; the case's pose is what the user can change.
-    throw Error(e.kind(), e.reason(), Where{case_file.file, where, value, 0});
+    throw Error(e.kind(), e.reason(), Where{spec.file, where, value, 0});
   }
 }
 
@@ -343,21 +366,13 @@ PathPoint path_point_from_values(const std::vector<double>& v) {
   return p;
 }
 
-std::vector<double> depth_grid(const PathSpec& path) {
-  if (!path.depths.empty()) return path.depths;
-  std::vector<double> grid;
-  const int n = static_cast<int>(std::ceil(path.depth_max / path.step - 1e-9));
-  for (int i = 1; i <= n; ++i) grid.push_back(std::min(path.depth_max, i * path.step));
-  return grid;
-}
-
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback,
                                 const PathControl& control) {
   // A power-law local contact is nonlinear even with linear kinematics: no fast path then.
   const bool fast =
       setup.model.kinematics == Kinematics::kLinear && setup.problem->num_local_unknowns() == 0;
   PathResult r = fast ? run_linear(setup, callback)
-                 : setup.case_file.contact.solver == ContactSolver::kActiveSet
+                 : setup.spec.contact.solver == ContactSolver::kActiveSet
                      ? run_active_set(setup, callback)
                      : run_continuation(setup, callback, control);
   for (int k : {0, 2}) {

@@ -32,9 +32,10 @@ struct DisplacementMonitor {
 };
 
 struct LoadProblemOptions {
-  std::vector<DisplacementMonitor> displacements;  // monitors after "load_factor"
-  std::string linear_solver = "umfpack";           // "umfpack" | "klu": K T + D is unsymmetric
-  int threads = 0;                                 // element assembly (0 = OpenMP default)
+  std::vector<DisplacementMonitor> displacements;               // monitors after "load_factor"
+  LinearSolverKind linear_solver = LinearSolverKind::kUmfpack;  // umfpack | klu: K T + D is
+                                                                // unsymmetric
+  int threads = 0;  // element assembly (0 = OpenMP default)
 };
 
 class LoadProblem : public cont::Problem {

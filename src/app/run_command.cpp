@@ -10,12 +10,13 @@
 #include <sstream>
 
 #include "analysis/indentation_run.hpp"
-#include "analysis/local_contact.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "io/case_file.hpp"
 #include "io/output_directory.hpp"
 #include "io/path_results.hpp"
 #include "io/result_fields.hpp"
+#include "io/spellings.hpp"
 #include "io/vtu_writer.hpp"
 
 namespace si {
@@ -131,10 +132,10 @@ std::string default_case_yaml() {
 }
 
 int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream& err) {
-  CaseFile c = o.case_file.empty() ? parse_case_file(default_case_yaml(), "built-in default case")
-                                   : read_case_file(o.case_file);
-  IndentationSetup setup(std::move(c), o.threads);
-  const CaseFile& cf = setup.case_file;
+  const CaseFile cf = o.case_file.empty()
+                          ? parse_case_file(default_case_yaml(), "built-in default case")
+                          : read_case_file(o.case_file);
+  IndentationSetup setup(cf, o.threads);
   for (const auto& w : setup.model.warnings) err << "shellindent: warning: " << w << "\n";
   const std::filesystem::path dir = o.out_dir.empty() ? cf.output.dir : o.out_dir;
   prepare_output_directory(dir, o.out_dir.empty()
@@ -171,9 +172,10 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   progress.done();
 
   const bool local = setup.problem->local_law().kind != LocalLawKind::kNone;
-  out << "Indentation of " << cf.file << " (" << r.method
+  out << "Indentation of " << cf.file << " (" << run_method_name(r.method)
       << "; whole-shell values, depth = indenter travel after first touch"
-      << (local ? std::string(", local law ") + local_contact_name(cf.contact.local) : "") << ")\n"
+      << (local ? ", local law " + spelling(local_contact_spellings(), cf.contact.local) : "")
+      << ")\n"
       << table_header(local) << "\n";
   for (const PathPoint& p : r.points) out << table_row(p, local) << "\n";
   for (const cont::Event& e : r.events)
@@ -184,7 +186,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   write_file_atomically((dir / "path.csv").string(), path_csv(r));
   write_file_atomically((dir / "path.json").string(), path_json(setup, r).dump(2) + "\n");
   write_file_atomically((dir / "events.json").string(), events_json(r).dump(2) + "\n");
-  const bool arclength = r.method == "pseudo_arclength";
+  const bool arclength = r.method == RunMethod::kPseudoArclength;
   if (arclength)
     write_file_atomically((dir / "path_grid.csv").string(),
                           path_grid_csv(r, cf.path.step, cf.path.depth_max));
@@ -197,7 +199,8 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   err << "shellindent: error: the run stopped after " << r.points.size() << " converged point(s)"
       << (r.points.empty() ? ""
                            : " at depth " + std::to_string(r.points.back().state.depth) + " mm")
-      << ": " << (r.status == "stopped" && g_interrupted ? "interrupted (Ctrl-C)" : r.reason)
+      << ": "
+      << (r.status == RunStatus::kStopped && g_interrupted ? "interrupted (Ctrl-C)" : r.reason)
       << "\n";
   return 1;
 }

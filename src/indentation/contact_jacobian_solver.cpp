@@ -20,9 +20,9 @@ constexpr int kMaxPreconditionerAge = 20;
 
 }  // namespace
 
-ContactJacobianSolver::ContactJacobianSolver(double kappa, const std::string& fallback,
+ContactJacobianSolver::ContactJacobianSolver(double kappa, LinearSolverKind fallback,
                                              double relative_tolerance)
-    : kappa_(kappa), fallback_name_(fallback) {
+    : kappa_(kappa), fallback_(fallback) {
   SI_REQUIRE(relative_tolerance > 0 && relative_tolerance < 1,
              "contact Jacobian: the Krylov tolerance must lie in (0, 1)");
   gmres_.relative_tolerance = relative_tolerance;
@@ -47,7 +47,7 @@ void ContactJacobianSolver::analyze_shell(const SparseMatrix& J, int num_shell) 
   for (int c = 0; c < num_shell; ++c)
     for (int k = H_.outerIndexPtr()[c]; k < H_.outerIndexPtr()[c + 1]; ++k)
       mirror_[k] = shell_slot(c, H_.innerIndexPtr()[k]);  // shell patterns are symmetric
-  cholesky_ = make_linear_solver("cholmod");
+  cholesky_ = make_linear_solver(LinearSolverKind::kCholmod);
   cholesky_->analyze(H_);
   rotation_slots_.clear();
   analyzed_outer_.clear();
@@ -151,7 +151,7 @@ bool ContactJacobianSolver::refresh_preconditioner() {
 }
 
 void ContactJacobianSolver::factor_fallback() {
-  if (!lu_) lu_ = make_linear_solver(fallback_name_);  // analyses J's pattern on first use
+  if (!lu_) lu_ = make_linear_solver(fallback_);  // analyses J's pattern on first use
   ++counters_.lu_fallbacks;
   lu_->factorize(*J_);  // throws a numerical error if J is singular
   use_lu_ = true;

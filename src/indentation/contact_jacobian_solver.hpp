@@ -47,10 +47,9 @@ struct ContactJacobianCounters {
 
 class ContactJacobianSolver {
  public:
-  // kappa: the problem's stiffness scale (N/mm). fallback: an LU solver name (linear_solver.hpp).
+  // kappa: the problem's stiffness scale (N/mm). fallback: an LU solver (linear_solver.hpp).
   // relative_tolerance: GMRES stops at ||J y - b|| <= relative_tolerance ||b|| (in (0, 1)).
-  ContactJacobianSolver(double kappa, const std::string& fallback,
-                        double relative_tolerance = 1e-12);
+  ContactJacobianSolver(double kappa, LinearSolverKind fallback, double relative_tolerance = 1e-12);
   ~ContactJacobianSolver();
 
   // J: the full Jacobian (num_shell shell rows/columns first, then one row/column per row of
@@ -79,7 +78,7 @@ class ContactJacobianSolver {
   int shell_slot(int row, int col) const;
 
   double kappa_;
-  std::string fallback_name_;
+  LinearSolverKind fallback_;
   const SparseMatrix* J_ = nullptr;
   int num_shell_ = -1;
   // Shell block of J: pattern, the slot of each entry's transpose, its slots in J.

@@ -48,11 +48,6 @@ int value_slot(const SparseMatrix& J, int row, int col) {
 
 }  // namespace
 
-double contact_face_offset(const CaseFile& c) {
-  const double top = 0.5 * c.laminate.thickness() - c.laminate.reference_offset;
-  return c.contact.surface == ContactSurface::kOuter ? top : -c.laminate.reference_offset;
-}
-
 IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& indenter,
                                        const Vector3d& direction, IndentationOptions options)
     : model_(model),
@@ -271,14 +266,16 @@ void IndentationProblem::build_pattern() {
   alpha_diagonal_ = u.local ? value_slot(jacobian_, u.alpha_index(), u.alpha_index()) : -1;
   // The Krylov solver condenses rows on one node's dofs: not the weighted rows, which span the
   // node's elements, nor the local approach alpha, which couples every row (the direct LU then).
-  if (options_.linear_solver == kPreconditionedKrylov && !weighted_ && !u.local) {
+  if (options_.linear_solver == JacobianSolverKind::kPreconditionedKrylov && !weighted_ &&
+      !u.local) {
     if (!krylov_)
-      krylov_ =
-          std::make_unique<ContactJacobianSolver>(kappa_, "umfpack", options_.krylov_tolerance);
+      krylov_ = std::make_unique<ContactJacobianSolver>(kappa_, LinearSolverKind::kUmfpack,
+                                                        options_.krylov_tolerance);
   } else {
     krylov_.reset();
-    solver_ = make_linear_solver(
-        options_.linear_solver == kPreconditionedKrylov ? "umfpack" : options_.linear_solver);
+    solver_ = make_linear_solver(options_.linear_solver == JacobianSolverKind::kKlu
+                                     ? LinearSolverKind::kKlu
+                                     : LinearSolverKind::kUmfpack);
   }
 }
 

@@ -57,8 +57,10 @@
 
 namespace si {
 
-// GMRES on the Jacobian preconditioned by a Cholesky factorization of its condensed shell block.
-inline const char* const kPreconditionedKrylov = "cholesky_gmres";
+// The Jacobian's solver: GMRES preconditioned by a Cholesky factorization of its condensed shell
+// block (contact_jacobian_solver.hpp; an LU of the Jacobian where it cannot help), or a direct
+// sparse LU (the Jacobian is unsymmetric).
+enum class JacobianSolverKind { kPreconditionedKrylov, kUmfpack, kKlu };
 
 struct IndentationOptions {
   double contact_offset = 0;    // c: contact face above the reference surface along d, mm
@@ -66,11 +68,9 @@ struct IndentationOptions {
   // Fischer-Burmeister on the feasible quadrant, min outside (ncp_function.hpp); kMin for the
   // active-set cross-check.
   NcpFunction ncp = NcpFunction::kFischerBurmeisterMin;
-  // The Jacobian's solver: kPreconditionedKrylov (contact_jacobian_solver.hpp; an LU of the
-  // Jacobian where it cannot help) or a direct LU, "umfpack" | "klu" (the Jacobian is unsymmetric).
   // The interpolated traction's rows span several nodes and a power-law local contact adds
-  // the unknown alpha: those use the direct LU.
-  std::string linear_solver = "cholesky_gmres";
+  // the unknown alpha: those use the direct LU (UMFPACK unless klu is asked for).
+  JacobianSolverKind linear_solver = JacobianSolverKind::kPreconditionedKrylov;
   // kPreconditionedKrylov: GMRES stops at a relative residual of krylov_tolerance. The Newton
   // corrections need no more than 1e-6: an inexact Newton method with a constant forcing term
   // (Dembo, Eisenstat & Steihaug 1982, SIAM J. Numer. Anal. 19:400-408) has
@@ -279,9 +279,5 @@ class IndentationProblem : public cont::Problem {
   double cached_h_ = 0;
   std::unique_ptr<IndentationState> cached_state_;
 };
-
-// The contact face offset of a case: the laminate's top face (contact.surface: outer) or its
-// mid-surface (contact.surface: mid, the paper's choice), measured from the reference surface.
-double contact_face_offset(const CaseFile& c);
 
 }  // namespace si

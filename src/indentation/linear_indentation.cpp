@@ -9,7 +9,7 @@
 namespace si {
 
 LinearIndentation::LinearIndentation(const IndentationProblem& problem)
-    : problem_(problem), solver_(make_linear_solver("cholmod")) {
+    : problem_(problem), solver_(make_linear_solver(LinearSolverKind::kCholmod)) {
   SI_REQUIRE(problem.model().kinematics == Kinematics::kLinear,
              "the linear fast path needs linear kinematics");
   SI_REQUIRE(problem.num_local_unknowns() == 0,

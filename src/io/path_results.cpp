@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "analysis/local_contact.hpp"
+#include "io/spellings.hpp"
 
 namespace si {
 namespace {
@@ -89,6 +89,40 @@ std::vector<double> interpolate(const PathPoint& a, const PathPoint& b, double d
 
 }  // namespace
 
+const char* run_method_name(RunMethod method) {
+  switch (method) {
+    case RunMethod::kLinearFastPath:
+      return "linear fast path";
+    case RunMethod::kActiveSet:
+      return "active_set";
+    case RunMethod::kNatural:
+      return "natural";
+    case RunMethod::kPseudoArclength:
+      break;
+  }
+  return "pseudo_arclength";
+}
+
+const char* run_status_name(RunStatus status) {
+  switch (status) {
+    case RunStatus::kCompleted:
+      return "completed";
+    case RunStatus::kReachedBound:
+      return "reached_bound";
+    case RunStatus::kMaxSteps:
+      return "max_steps";
+    case RunStatus::kStepTooSmall:
+      return "step_too_small";
+    case RunStatus::kStopped:
+      return "stopped_by_callback";
+    case RunStatus::kStartFailed:
+      return "start_failed";
+    case RunStatus::kFailed:
+      break;
+  }
+  return "failed";
+}
+
 std::string path_csv_header() {
   std::string h;
   for (const char* c : kColumns) h += (h.empty() ? "" : ",") + std::string(c);
@@ -160,7 +194,7 @@ namespace {
 // contact.local and its constant (docs/theory/local-indentation.md).
 nlohmann::json local_contact_json(const IndentationSetup& setup) {
   const LocalContactLaw& law = setup.problem->local_law();
-  nlohmann::json j = {{"law", local_contact_name(setup.case_file.contact.local)}};
+  nlohmann::json j = {{"law", spelling(local_contact_spellings(), setup.spec.contact.local)}};
   if (law.kind == LocalLawKind::kPowerLaw) {
     j["k_N_per_mm1.5"] = law.k;
     j["dent_radius_mm"] = law.radius;  // hertz_dent.hpp; 0: uniform approach
@@ -180,10 +214,10 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
     for (std::size_t i = 0; i < v.size(); ++i) row[kColumns[i]] = v[i];
     points.push_back(row);
   }
-  return {{"case", setup.case_file.file},
-          {"method", result.method},
+  return {{"case", setup.spec.file},
+          {"method", run_method_name(result.method)},
           {"element", m.element->name()},
-          {"kinematics", m.kinematics == Kinematics::kLinear ? "linear" : "nonlinear"},
+          {"kinematics", spelling(kinematics_spellings(), m.kinematics)},
           {"nodes", m.mesh.num_nodes()},
           {"elements", m.mesh.num_elements()},
           {"shell_unknowns", setup.problem->num_shell_unknowns()},
@@ -199,7 +233,7 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
             {"factorizations", setup.problem->counters().factorizations},
             {"solves", setup.problem->counters().solves},
             {"evaluations", setup.problem->counters().evaluations}}},
-          {"status", result.status},
+          {"status", run_status_name(result.status)},
           {"completed", result.completed},
           {"reason", result.reason},
           {"points", points},

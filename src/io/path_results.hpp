@@ -22,6 +22,12 @@
 
 namespace si {
 
+// The names of a run's method and status in path.json and the run's summary ("linear fast
+// path", "active_set", "natural", "pseudo_arclength"; "completed", "reached_bound", "max_steps",
+// "step_too_small", "stopped_by_callback", "start_failed", "failed").
+const char* run_method_name(RunMethod method);
+const char* run_status_name(RunStatus status);
+
 // The header line of path.csv (without newline).
 std::string path_csv_header();
 std::string path_csv(const PathResult& result);

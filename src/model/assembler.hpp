@@ -19,10 +19,10 @@
 
 #include <vector>
 
+#include "core/sparse.hpp"
 #include "model/dof_map.hpp"
 #include "model/mesh.hpp"
 #include "shell/shell_element.hpp"
-#include "solvers/linear_solver.hpp"
 
 namespace si {
 

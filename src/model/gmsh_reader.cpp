@@ -108,7 +108,7 @@ class TokenStream {
   size_t row_ = 0, col_ = 0;
 };
 
-struct ElementType {
+struct GmshElementType {
   int dim;
   int num_nodes;
   const char* name;
@@ -116,7 +116,7 @@ struct ElementType {
 
 // Gmsh element types (MSH format documentation, "elm-type") a surface mesh file may contain;
 // num_nodes = 0 for a type this reader does not know.
-ElementType element_type(long long type) {
+GmshElementType element_type(long long type) {
   switch (type) {
     case 1:
       return {1, 2, "2-node line"};
@@ -248,7 +248,7 @@ void read_elements(TokenStream& in, MshContent& msh) {
     const int entity = static_cast<int>(in.integer("an entity tag"));
     const long long type = in.integer("an element type");
     const int n = in.count("the number of elements in a block");
-    const ElementType info = element_type(type);
+    const GmshElementType info = element_type(type);
     if (info.num_nodes == 0) in.fail("unsupported Gmsh element type", std::to_string(type));
     for (int k = 0; k < n; ++k) {
       const long long tag = in.integer("an element tag");

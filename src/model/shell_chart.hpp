@@ -21,10 +21,10 @@
 
 #include <vector>
 
+#include "core/sparse.hpp"
 #include "model/dof_map.hpp"
 #include "model/mesh.hpp"
 #include "shell/director.hpp"
-#include "solvers/linear_solver.hpp"
 
 namespace si {
 

@@ -65,18 +65,6 @@ Mesh panel_mesh(const ShellSpec& shell, const MeshSpec& spec) {
   return m;
 }
 
-std::string element_name(ElementType type) {
-  switch (type) {
-    case ElementType::kMitc4:
-      return "mitc4";
-    case ElementType::kMitc4Plain:
-      return "mitc4-plain";
-    case ElementType::kBernstein4:
-      return "bernstein4";
-  }
-  return "mitc4";
-}
-
 // Element count of the requested mesh, from above (the graded disk meshes have size_apex
 // within refine_radius and size_edge outside it), so that an absurd size is refused before the
 // generator tries to allocate it.
@@ -102,7 +90,7 @@ double estimated_element_count(const ShellSpec& shell, const MeshSpec& mesh) {
 
 constexpr double kMaxElements = 4e6;  // ~1e8 dofs: beyond any 24 GB machine's direct solver
 
-void check_mesh_size(const CaseFile& c) {
+void check_mesh_size(const ShellModelSpec& c) {
   const double n = estimated_element_count(c.shell, c.mesh);
   if (n > kMaxElements) {
     std::ostringstream os;
@@ -115,7 +103,7 @@ void check_mesh_size(const CaseFile& c) {
 
 // The mesh generators name their own parameters (size_apex, base_radius, ...); report them with
 // the case file and the dotted key the user wrote.
-Mesh shell_mesh_in_case(const CaseFile& c) {
+Mesh shell_mesh_in_case(const ShellModelSpec& c) {
   try {
     return shell_mesh(c.shell, c.mesh);
   } catch (const Error& e) {
@@ -126,7 +114,7 @@ Mesh shell_mesh_in_case(const CaseFile& c) {
   }
 }
 
-void check_quarter_symmetry(const CaseFile& c, const Matrix6d& A_R) {
+void check_quarter_symmetry(const ShellModelSpec& c, const Matrix6d& A_R) {
   if (c.mesh.symmetry != Symmetry::kQuarter) return;
   if (is_specially_orthotropic(A_R, 1e-10)) return;
   throw_input(
@@ -137,7 +125,7 @@ void check_quarter_symmetry(const CaseFile& c, const Matrix6d& A_R) {
       Where{c.file, "mesh.symmetry", "quarter", 0});
 }
 
-std::vector<Support> edge_supports(const CaseFile& c) {
+std::vector<Support> edge_supports(const ShellModelSpec& c) {
   std::vector<Support> supports;
   const bool quarter = c.mesh.symmetry == Symmetry::kQuarter;
   switch (c.shell.edge) {
@@ -214,7 +202,7 @@ Loads shell_loads(const LoadSpec& load, double symmetry_factor) {
   return loads;
 }
 
-ShellModel build_shell_model(const CaseFile& c) {
+ShellModel build_shell_model(const ShellModelSpec& c) {
   ShellModel model;
   const VamSection vam = analyze_vam(c.laminate);
   check_quarter_symmetry(c, vam.A_R);
@@ -230,7 +218,7 @@ ShellModel build_shell_model(const CaseFile& c) {
     });
     set_node_set(model.mesh, "rim_x", {rim});
   }
-  model.element = make_shell_element(element_name(c.mesh.element));
+  model.element = make_shell_element(c.mesh.element);
   if (c.mesh.element == ElementType::kBernstein4)
     model.warnings.push_back(
         "mesh.element = bernstein4: the source paper's element has no partition of unity and "

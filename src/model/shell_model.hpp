@@ -1,5 +1,6 @@
-// A shell model ready for the solvers, built from a case file (docs/case-file.md, "How
-// `shellindent static` builds the model"): the mesh of `shell` + `mesh`, the VAM section law of
+// A shell model ready for the solvers, built from its spec (the case file's laminate, shell,
+// mesh, kinematics and load sections; docs/case-file.md, "How `shellindent static` builds the
+// model"): the mesh of `shell` + `mesh`, the VAM section law of
 // the laminate, the element, the kinematics, the edge supports and symmetry planes, and the
 // loads of the `load` section (no contact).
 //
@@ -13,18 +14,32 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "io/case_file.hpp"
+#include "model/load_spec.hpp"
 #include "model/loads.hpp"
 #include "model/mesh.hpp"
+#include "model/mesh_spec.hpp"
+#include "model/shell_spec.hpp"
 #include "model/supports.hpp"
+#include "section/laminate.hpp"
 #include "shell/kinematics.hpp"
 #include "shell/shell_element.hpp"
 #include "shell/shell_law.hpp"
 
 namespace si {
+
+// What a shell model is built from. Errors name the spec's `file` and the case-file key.
+struct ShellModelSpec {
+  Laminate laminate;
+  ShellSpec shell;
+  MeshSpec mesh;
+  Kinematics kinematics = Kinematics::kNonlinear;
+  std::optional<LoadSpec> load;  // only for load-controlled runs
+  std::string file;              // the file (or label) the spec was read from, for messages
+};
 
 struct ShellModel {
   Mesh mesh;
@@ -44,7 +59,7 @@ struct ShellModel {
 // Throws an input error naming the case-file key for a case the model cannot represent: a
 // quarter model of a section that is not specially orthotropic in the model axes
 // (`mesh.symmetry`), an odd-sized or too coarse mesh, a simply supported curved edge.
-ShellModel build_shell_model(const CaseFile& c);
+ShellModel build_shell_model(const ShellModelSpec& spec);
 
 // The mesh alone (the first step of build_shell_model).
 Mesh shell_mesh(const ShellSpec& shell, const MeshSpec& mesh);

@@ -33,8 +33,9 @@ void StaticSettings::validate() const {
     bad("tolerance", std::to_string(tolerance), "tolerance must be in (0, 1)");
   if (max_halvings < 0 || max_halvings > 30)
     bad("max_halvings", std::to_string(max_halvings), "max_halvings must be in 0..30");
-  if (linear_solver != "cholmod" && linear_solver != "umfpack")
-    bad("linear_solver", linear_solver, "unknown linear solver (expected cholmod or umfpack)");
+  if (linear_solver != LinearSolverKind::kCholmod && linear_solver != LinearSolverKind::kUmfpack)
+    bad("linear_solver", make_linear_solver(linear_solver)->name(),
+        "not a solver for the static run (expected cholmod or umfpack)");
 }
 
 StaticSolver::StaticSolver(const Mesh& mesh, const DofMap& dofs, const ShellElement& element,
@@ -53,7 +54,8 @@ StaticSolver::StaticSolver(const Mesh& mesh, const DofMap& dofs, const ShellElem
                   Where{"", "static.record_nodes", std::to_string(n), 0});
   fixed_load_ = fixed_load_vector(mesh, loads_);  // validates the loads
   // Non-symmetric tangent: CHOLMOD would silently use its lower triangle only.
-  solver_ = make_linear_solver(loads_.has_follower() ? "umfpack" : settings_.linear_solver);
+  solver_ = make_linear_solver(loads_.has_follower() ? LinearSolverKind::kUmfpack
+                                                     : settings_.linear_solver);
 }
 
 StaticSolver::~StaticSolver() = default;
@@ -92,7 +94,7 @@ void StaticSolver::factorize(const SparseMatrix& K) {
     solver_->factorize(K);
   } catch (const Error&) {
     if (!solver_->needs_spd()) throw;
-    solver_ = make_linear_solver("umfpack");
+    solver_ = make_linear_solver(LinearSolverKind::kUmfpack);
     solver_->factorize(K);
   }
 }
@@ -102,7 +104,7 @@ void StaticSolver::finish_step(const std::vector<NodeState>& state, double lambd
                                StepResult& result) const {
   result.load_factor = lambda;
   result.energy = assembly.energy;
-  result.linear_solver = solver_->name();
+  result.linear_solver = solver_->kind();
   const Eigen::VectorXd r = reactions(dofs_, assembly.internal_force, f_ext);
   result.reactions.resize(dofs_.num_prescribed());
   for (int i = 0; i < dofs_.num_prescribed(); ++i)

@@ -30,6 +30,7 @@
 
 #include "model/assembler.hpp"
 #include "model/loads.hpp"
+#include "solvers/linear_solver.hpp"
 
 namespace si {
 
@@ -39,8 +40,8 @@ struct StaticSettings {
   double tolerance = 1e-8;  // relative residual and energy ratio
   bool halve_on_failure = true;
   int max_halvings = 5;
-  std::string linear_solver = "cholmod";  // "cholmod" | "umfpack"
-  std::vector<int> record_nodes;          // nodes whose displacement each StepResult keeps
+  LinearSolverKind linear_solver = LinearSolverKind::kCholmod;  // cholmod | umfpack
+  std::vector<int> record_nodes;  // nodes whose displacement each StepResult keeps
 
   // Throws an input error naming the bad field.
   void validate() const;
@@ -55,7 +56,7 @@ struct StepResult {
   Vector3d reaction_force = Vector3d::Zero();  // sum of the translational reactions, N
   Vector3d applied_force = Vector3d::Zero();   // sum of the applied nodal forces, N
   std::vector<double> residual_history;        // relative residual at each iteration
-  std::string linear_solver;                   // solver used for the last factorization
+  LinearSolverKind linear_solver = LinearSolverKind::kCholmod;  // of the last factorization
 };
 
 // Called after each converged (sub)step with the result and the converged state. Returning

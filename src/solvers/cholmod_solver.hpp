@@ -14,6 +14,7 @@ class CholmodSolver : public LinearSolver {
  public:
   CholmodSolver();
   ~CholmodSolver() override;
+  LinearSolverKind kind() const override { return LinearSolverKind::kCholmod; }
   std::string name() const override { return "cholmod"; }
   bool needs_spd() const override { return true; }
   void analyze(const SparseMatrix& A) override;

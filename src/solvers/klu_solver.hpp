@@ -14,6 +14,7 @@ class KluSolver : public LinearSolver {
  public:
   KluSolver();
   ~KluSolver() override;
+  LinearSolverKind kind() const override { return LinearSolverKind::kKlu; }
   std::string name() const override { return "klu"; }
   bool needs_spd() const override { return false; }
   void analyze(const SparseMatrix& A) override;

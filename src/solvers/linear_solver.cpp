@@ -9,12 +9,16 @@
 
 namespace si {
 
-std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name) {
-  if (name == "cholmod") return std::make_unique<CholmodSolver>();
-  if (name == "umfpack") return std::make_unique<UmfpackSolver>();
-  if (name == "klu") return std::make_unique<KluSolver>();
-  throw_input("unknown linear solver (expected cholmod, umfpack or klu)",
-              Where{"", "linear_solver", name, 0});
+std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind) {
+  switch (kind) {
+    case LinearSolverKind::kCholmod:
+      return std::make_unique<CholmodSolver>();
+    case LinearSolverKind::kUmfpack:
+      return std::make_unique<UmfpackSolver>();
+    case LinearSolverKind::kKlu:
+      return std::make_unique<KluSolver>();
+  }
+  throw Error(ErrorKind::kInternal, "make_linear_solver: unknown solver kind");
 }
 
 std::string singular_matrix_message(const std::string& solver, double rcond) {

@@ -5,13 +5,12 @@
 // (pivot ratio) below kSingularRcond, since roundoff often hides an exact singularity.
 #pragma once
 
-#include <Eigen/SparseCore>
 #include <memory>
 #include <string>
 
-namespace si {
+#include "core/sparse.hpp"
 
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+namespace si {
 
 // Below this pivot-ratio estimate (min/max pivot) a matrix is treated as singular: 1e-14 is about
 // 50 machine epsilons. Measured on a free 6x6 spring net (tests/model): UMFPACK's estimate is
@@ -19,10 +18,14 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 // A well-supported but very thin shell has pivot ratios of order (t/L)^2 (h/L)^2, far above.
 constexpr double kSingularRcond = 1e-14;
 
+// cholmod: supernodal Cholesky (SPD); umfpack, klu: general sparse LU.
+enum class LinearSolverKind { kCholmod, kUmfpack, kKlu };
+
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
-  virtual std::string name() const = 0;
+  virtual LinearSolverKind kind() const = 0;
+  virtual std::string name() const = 0;  // for messages: "cholmod", "umfpack", "klu"
   // True if the solver needs a symmetric positive-definite matrix (reads the lower triangle only).
   virtual bool needs_spd() const = 0;
   virtual void analyze(const SparseMatrix& A) = 0;
@@ -33,9 +36,7 @@ class LinearSolver {
   virtual double rcond() const = 0;
 };
 
-// "cholmod" (SPD, supernodal Cholesky), "umfpack" or "klu" (general LU). Unknown name: input
-// error.
-std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name);
+std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind);
 
 // The message every solver uses when the matrix turns out singular.
 std::string singular_matrix_message(const std::string& solver, double rcond);

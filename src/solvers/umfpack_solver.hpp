@@ -12,6 +12,7 @@ class UmfpackSolver : public LinearSolver {
  public:
   UmfpackSolver();
   ~UmfpackSolver() override;
+  LinearSolverKind kind() const override { return LinearSolverKind::kUmfpack; }
   std::string name() const override { return "umfpack"; }
   bool needs_spd() const override { return false; }
   void analyze(const SparseMatrix& A) override;

@@ -94,7 +94,7 @@ void expect_matches_dense_lu(ContactJacobianSolver& solver, const SparseMatrix& 
 TEST(ContactJacobianSolver, ExactStructureSolvesInTwoProducts) {
   const Synthetic s = make_synthetic();
   const SparseMatrix J = s.jacobian();
-  ContactJacobianSolver solver(kKappa, "umfpack");
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
   solver.factorize(J, kShell, s.rotations, s.rows);
   expect_matches_dense_lu(solver, J);
   EXPECT_EQ(solver.counters().cholesky, 1);
@@ -106,7 +106,7 @@ TEST(ContactJacobianSolver, ExactStructureSolvesInTwoProducts) {
 // products, not accuracy: the products are with the exact J.
 TEST(ContactJacobianSolver, DrillingTermAndStaleFactorStayExact) {
   Synthetic s = make_synthetic();
-  ContactJacobianSolver solver(kKappa, "umfpack");
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
   const SparseMatrix J1 = s.jacobian();
   solver.factorize(J1, kShell, s.rotations, s.rows);
   expect_matches_dense_lu(solver, J1);
@@ -127,7 +127,7 @@ TEST(ContactJacobianSolver, AppendedRowsKeepTheFactorAndStayExact) {
   Synthetic s = make_synthetic();
   const ContactJacobianRow appended = s.rows.back();
   s.rows.pop_back();
-  ContactJacobianSolver solver(kKappa, "umfpack");
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
   const SparseMatrix J1 = s.jacobian();
   solver.factorize(J1, kShell, s.rotations, s.rows);
   expect_matches_dense_lu(solver, J1);
@@ -154,21 +154,21 @@ TEST(ContactJacobianSolver, SolvesToTheRequestedRelativeResidual) {
   long products[2] = {0, 0};
   const double tolerances[2] = {1e-4, 1e-12};
   for (int k = 0; k < 2; ++k) {
-    ContactJacobianSolver solver(kKappa, "umfpack", tolerances[k]);
+    ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack, tolerances[k]);
     solver.factorize(J, kShell, s.rotations, s.rows);
     const Eigen::VectorXd x = solver.solve(b);
     EXPECT_LE((J * x - b).norm(), tolerances[k] * b.norm()) << tolerances[k];
     products[k] = solver.counters().krylov_products;
   }
   EXPECT_LE(products[0], products[1]);
-  EXPECT_THROW(ContactJacobianSolver(kKappa, "umfpack", 0.0), Error);
+  EXPECT_THROW(ContactJacobianSolver(kKappa, LinearSolverKind::kUmfpack, 0.0), Error);
 }
 
 // An indefinite shell block (past a limit point) has no Cholesky factor: the LU takes over.
 TEST(ContactJacobianSolver, IndefiniteShellBlockFallsBackToLu) {
   const Synthetic s = make_synthetic(-1.0);
   const SparseMatrix J = s.jacobian();
-  ContactJacobianSolver solver(kKappa, "umfpack");
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
   solver.factorize(J, kShell, s.rotations, s.rows);
   expect_matches_dense_lu(solver, J);
   EXPECT_EQ(solver.counters().lu_fallbacks, 1);

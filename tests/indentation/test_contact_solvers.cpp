@@ -144,7 +144,7 @@ namespace {
 TEST(ContactSolvers, PreconditionedKrylovAgreesWithDirectLu_Nonlinear) {
   const std::vector<double> depths{0.5, 1.0, 2.0};
   IndentationOptions lu_options;
-  lu_options.linear_solver = "umfpack";
+  lu_options.linear_solver = JacobianSolverKind::kUmfpack;
   IndentationFixture krylov(coarse_cap_case("nonlinear", "[45/-45]2S"));
   IndentationFixture lu(coarse_cap_case("nonlinear", "[45/-45]2S"), lu_options);
   const Path a = kinsol_path(*krylov.problem, depths);

@@ -91,7 +91,7 @@ TEST(IndentationProblem, InterpolatedTractionJacobianMatchesFiniteDifferences) {
 // The direct LU route of the same Jacobian (the Krylov solver is the default).
 TEST(IndentationProblem, NonlinearJacobianMatchesFiniteDifferences_DirectLu) {
   IndentationOptions o;
-  o.linear_solver = "umfpack";
+  o.linear_solver = JacobianSolverKind::kUmfpack;
   IndentationFixture f(coarse_cap_case("nonlinear", "[0/90]2S"), o);
   expect_jacobian_matches_fd(*f.problem, 0.3);
 }
@@ -263,7 +263,7 @@ TEST(IndentationProblem, HertzDent_IndenterOffTheNodes_RegularStartAndSolve) {
 TEST(IndentationProblem, HertzLocalLaw_LinearCap_StartIsRegularDespiteRoundoffInTheFirstGap) {
   CaseFile c = coarse_cap_case("linear", "[0/0]2S", "quarter", 1.5);
   c.contact.local = LocalContactModel::kHertz;
-  IndentationSetup setup(c, 1, "umfpack");
+  IndentationSetup setup(c, 1, JacobianSolverKind::kUmfpack);
   IndentationProblem& p = *setup.problem;
   cont::Vector z = p.initial_point(), F;
   ASSERT_TRUE(p.residual(z, 0.0, F));

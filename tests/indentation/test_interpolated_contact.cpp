@@ -28,7 +28,7 @@ using testing::IndentationFixture;
 struct FlatPlate {
   Mesh mesh = distorted(rectangular_plate_mesh(8, 6, 4, 3));
   DofMap dofs{mesh.num_nodes(), {}};
-  std::unique_ptr<ShellElement> element = make_shell_element("mitc4");
+  std::unique_ptr<ShellElement> element = make_shell_element(ElementType::kMitc4);
   Assembler assembler{
       mesh, dofs, *element, isotropic_shell_law(70000, 0.3, 1.0), Kinematics::kLinear, 1};
   std::unique_ptr<Indenter> punch;

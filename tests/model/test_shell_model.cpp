@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "io/case_file.hpp"
 #include "model/supports.hpp"
 
 namespace si {

@@ -81,7 +81,7 @@ TEST(StaticSolver, NewtonConvergesQuadraticallyToEquilibrium) {
     }
     EXPECT_TRUE(checked) << "no asymptotic iterations to check, residuals:" << h;
     EXPECT_LE(s.iterations, 8) << h;
-    EXPECT_EQ(s.linear_solver, "cholmod");
+    EXPECT_EQ(s.linear_solver, LinearSolverKind::kCholmod);
   }
   // Large deflection: the tip moves up and in (the strip bends, springs keep its length).
   const Vector3d tip = steps.back().displacements[0];
@@ -299,7 +299,7 @@ TEST(StaticSolver, FollowerPressureUsesUmfpackAndConvergesQuadratically) {
   std::vector<NodeState> state = reference_state(m);
   const auto& steps = solver.solve(state);
   for (const StepResult& r : steps) {
-    EXPECT_EQ(r.linear_solver, "umfpack");
+    EXPECT_EQ(r.linear_solver, LinearSolverKind::kUmfpack);
     const std::string h = history(r);
     for (std::size_t k = 0; k + 1 < r.residual_history.size(); ++k) {
       const double x = r.residual_history[k], next = r.residual_history[k + 1];
@@ -327,7 +327,7 @@ TEST(StaticSolver, FallsBackToUmfpackWhenTheTangentIsIndefinite) {
   std::vector<NodeState> state = reference_state(c.mesh);
   const auto& steps = solver.solve(state);
   ASSERT_EQ(steps.size(), 1u);
-  EXPECT_EQ(steps[0].linear_solver, "umfpack");
+  EXPECT_EQ(steps[0].linear_solver, LinearSolverKind::kUmfpack);
   EXPECT_LT(equilibrium_error(c.mesh, c.dofs, indefinite, state,
                               fixed_load_vector(c.mesh, c.tip_load(0.01))),
             1e-10);
@@ -349,7 +349,7 @@ TEST(StaticSolver, SettingsAreValidatedAtConstruction) {
   s.max_iterations = 0;
   EXPECT_THROW(make(s), Error);
   s = {};
-  s.linear_solver = "mumps";
+  s.linear_solver = LinearSolverKind::kKlu;  // a general LU, not one of the static run's
   EXPECT_THROW(make(s), Error);
   s = {};
   s.record_nodes = {1000};

@@ -56,7 +56,7 @@ inline BenchmarkRun run_mitc4_nonlinear(const Mesh& mesh, const std::vector<Supp
                                         const Loads& loads, const ShellLaw& law,
                                         const StaticSettings& settings) {
   const DofMap dofs = make_dof_map(mesh, supports);
-  const auto element = make_shell_element("mitc4");
+  const auto element = make_shell_element(ElementType::kMitc4);
   StaticSolver solver(mesh, dofs, *element, law, Kinematics::kNonlinear, loads, settings, 1);
   BenchmarkRun run;
   run.state = reference_state(mesh);

@@ -1,0 +1,20 @@
+// The load of a load-controlled run (`shellindent static`, docs/case-file.md `load`).
+#pragma once
+
+namespace si {
+
+enum class LoadType { kApexForce, kPressure };
+
+// The load grows from 0 to its full value in `steps` equal increments. No contact: the
+// indenter, contact and path sections are not used.
+struct LoadSpec {
+  LoadType type = LoadType::kApexForce;
+  double force = 0;       // N, apex_force: total force along -z at the apex node (the whole shell;
+                          //    a quarter model carries a quarter of it)
+  double pressure = 0;    // MPa, pressure: on every element, acting against the director (inwards
+                          //    on the cap's convex side, i.e. towards -z at the apex)
+  int steps = 10;         // >= 1
+  bool follower = false;  // pressure only: follows the deformed surface
+};
+
+}  // namespace si
