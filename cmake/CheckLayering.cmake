@@ -26,7 +26,7 @@ set(allowed_fitting "")
 set(rooms core solvers material section shell model contact indentation analysis io app
           continuation fitting)
 if(NOT MAX_LINES)
-  set(MAX_LINES 800)
+  set(MAX_LINES 500)
 endif()
 
 if(SELF_TEST)

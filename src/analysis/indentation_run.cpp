@@ -9,6 +9,7 @@
 
 #include "analysis/critical_force.hpp"
 #include "analysis/local_contact.hpp"
+#include "analysis/path_columns.hpp"
 #include "contact/indenter_factory.hpp"
 #include "continuation/checkpoint.hpp"
 #include "continuation/kinsol_corrector.hpp"
@@ -39,6 +40,7 @@ IndentationOptions options_of(const IndentationCase& c, int threads,
   o.interpolated.fbar = c.contact.fbar;
   if (c.contact.fbar) o.interpolated.fbar_top = analyze_vam(c.laminate).Fbar_top;
   o.local = local_contact_law(c);
+  o.monitors = path_monitors();
   return o;
 }
 
@@ -182,7 +184,7 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   // its default, 1000 max(1, |z0|), cuts the Newton steps of a stiff shell short (measured: 2 %
   // residual decrease per iteration on the paper's cap). Allow any step the line search accepts.
   c.newton.max_step = 1e12;
-  c.extremum_monitors = {"force_N"};
+  c.extremum_monitors = {column_name(PathColumn::kForce)};
   // Inflections of T_N against k11, k22 (the critical force) come from the points afterwards
   // (critical_force.hpp): located ones would sit on every contact-set change.
   c.detect_signature_changes = true;
@@ -320,50 +322,6 @@ IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolve
     // The problem names `indenter`; the case's pose is what the user can change.
     throw Error(e.kind(), e.reason(), Where{spec.file, where, value, 0});
   }
-}
-
-std::vector<double> path_point_values(const PathPoint& p) {
-  const IndentationState& s = p.state;
-  return {s.depth,
-          s.force,
-          s.reaction,
-          s.apex_deflection,
-          s.contact_radius,
-          s.contact_area,
-          static_cast<double>(s.contact_nodes),
-          s.apex_curvature[0],
-          s.apex_curvature[1],
-          s.apex_curvature[2],
-          s.energy,
-          p.work,
-          s.min_gap,
-          s.min_multiplier,
-          s.max_complementarity,
-          static_cast<double>(p.iterations),
-          p.step,
-          s.local_indentation,
-          s.local_energy,
-          s.contact_curvature_min[0],
-          s.contact_curvature_max[0],
-          s.contact_curvature_min[1],
-          s.contact_curvature_max[1],
-          s.contact_curvature_min[2],
-          s.contact_curvature_max[2]};
-}
-
-PathPoint path_point_from_values(const std::vector<double>& v) {
-  SI_REQUIRE(v.size() == 25, "a path point has 25 values");
-  PathPoint p;
-  IndentationState& s = p.state;
-  s.depth = v[0], s.force = v[1], s.reaction = v[2], s.apex_deflection = v[3];
-  s.contact_radius = v[4], s.contact_area = v[5], s.contact_nodes = static_cast<int>(v[6]);
-  s.apex_curvature = Vector3d(v[7], v[8], v[9]);
-  s.energy = v[10], p.work = v[11], s.min_gap = v[12], s.min_multiplier = v[13];
-  s.max_complementarity = v[14], p.iterations = static_cast<int>(v[15]), p.step = v[16];
-  s.local_indentation = v[17], s.local_energy = v[18];
-  s.contact_curvature_min = Vector3d(v[19], v[21], v[23]);
-  s.contact_curvature_max = Vector3d(v[20], v[22], v[24]);
-  return p;
 }
 
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback,

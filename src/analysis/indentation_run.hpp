@@ -54,14 +54,6 @@ struct PathPoint {
   Eigen::VectorXd depth_slopes;
 };
 
-// A point's scalar results in the order of path.csv's columns (io/path_results.hpp, docs/
-// results.md): depth, force, reaction, apex deflection, contact radius, area, nodes, k11, k12,
-// k22, energy, work, min gap, min multiplier, max complementarity, iterations, step, local
-// indentation, local energy. The inverse
-// restores those fields (checkpoints); the per-node vectors of the state stay empty.
-std::vector<double> path_point_values(const PathPoint& p);
-PathPoint path_point_from_values(const std::vector<double>& v);
-
 // How a path was computed (see the header): the linear fast path, the active-set grid, or a
 // continuation method.
 enum class RunMethod { kLinearFastPath, kActiveSet, kNatural, kPseudoArclength };
