@@ -16,6 +16,9 @@ walks WORK/<a>/out and WORK/<b>/out:
   volatile      the same after masking what changes from run to run: durations ("3.1 s", ETA),
                 dates, load averages and JSON keys that hold them (wall_s, cpu_s, measured,
                 load_average), and the order of lines in logs of parallel sweeps;
+  reordered     the verification records (records.jsonl, verification.csv, verification.json):
+                the same records, in another order (the order in which the test binaries ran
+                them, which follows the test files);
   round-off     numbers differ within --rtol/--atol, everything else the same (only with a
                 tolerance given; the default compares exactly);
   different     anything else (listed with the first differing lines).
@@ -38,13 +41,15 @@ import sys
 import time
 
 JOBS = ["main", "paper_quick", "paper_full", "sandwich", "verification"]
+TEST_BINARIES = ["shellindent_tests", "continuation_tests", "fitting_tests"]
 
 # ---- running ---------------------------------------------------------------------------------
 
 
-def job_commands(jobs_j):
+def job_commands(jobs_j, root):
     """{job: [argv, ...]} relative to the staging directory (cwd)."""
     py = "/usr/bin/python3"
+    tests = [f"bin/{b}" for b in TEST_BINARIES if os.path.exists(os.path.join(root, "bin", b))]
     return {
         "main": [["bin/shellindent", "run", "--out", "out/main"],
                  [py, "src/studies/plot_path.py", "out/main", "out/main/force_depth.png"]],
@@ -56,7 +61,7 @@ def job_commands(jobs_j):
                         "--report-dir", "out/paper_full/report"]],
         "sandwich": [[py, "src/studies/sandwich.py", "--exe", "bin/shellindent", "-j", str(jobs_j),
                       "--out", "out/sandwich", "--report-dir", "out/sandwich/report"]],
-        "verification": [[py, "src/studies/verification.py", "--tests", "bin/shellindent_tests",
+        "verification": [[py, "src/studies/verification.py", "--tests"] + tests + [
                           "--out", "out/verification",
                           "--doc", "out/verification_doc/verification.md"]],
     }
@@ -70,7 +75,11 @@ def stage(args):
     os.makedirs(os.path.join(root, "bin"))
     shutil.copy2(args.exe, os.path.join(root, "bin", "shellindent"))
     if args.tests:
-        shutil.copy2(args.tests, os.path.join(root, "bin", "shellindent_tests"))
+        # The toolkit's gtest binary and, beside it, the generic libraries' own (if built).
+        for name in TEST_BINARIES:
+            path = os.path.join(os.path.dirname(args.tests), name)
+            if os.path.exists(path):
+                shutil.copy2(path, os.path.join(root, "bin", name))
     shutil.copytree(os.path.join(args.src, "studies"), os.path.join(root, "src", "studies"),
                     ignore=shutil.ignore_patterns("__pycache__"))
     os.makedirs(os.path.join(root, "out", "verification_doc"))
@@ -82,7 +91,7 @@ def stage(args):
 def run_side(args):
     root = stage(args)
     wanted = args.jobs_only.split(",") if args.jobs_only else JOBS
-    commands = job_commands(args.j)
+    commands = job_commands(args.j, root)
     for job in wanted:
         for k, argv in enumerate(commands[job]):
             start = time.monotonic()
@@ -164,6 +173,22 @@ def normalised(path, data):
     return text
 
 
+def record_set(path, data):
+    """The verification records of a file, order-free (None if not such a file)."""
+    name = os.path.basename(path)
+    text = data.decode("utf-8", "replace")
+    if name == "records.jsonl":
+        return sorted(line for line in text.splitlines() if line.strip())
+    if name == "verification.csv":
+        lines = text.splitlines()
+        return lines[:1] + sorted(lines[1:])
+    if name == "verification.json":
+        doc = json.loads(text)
+        doc["records"] = sorted(json.dumps(r, sort_keys=True) for r in doc["records"])
+        return doc
+    return None
+
+
 def numeric_diff(a, b, rtol, atol):
     """(same apart from numbers within tolerance, largest relative difference)."""
     ta, tb = NUMBER.split(a), NUMBER.split(b)
@@ -210,7 +235,12 @@ def compare(args):
     a_root = os.path.join(args.work, args.a, "out")
     b_root = os.path.join(args.work, args.b, "out")
     fa, fb = files_under(a_root), files_under(b_root)
-    result = {"identical": [], "volatile": [], "round-off": [], "different": []}
+    if args.jobs_only:
+        jobs = tuple(args.jobs_only.split(","))
+        def of_jobs(rel):
+            return rel.split("/")[0].split(".")[0] in jobs
+        fa, fb = {f for f in fa if of_jobs(f)}, {f for f in fb if of_jobs(f)}
+    result = {"identical": [], "volatile": [], "reordered": [], "round-off": [], "different": []}
     details = []
     for rel in sorted(fa - fb):
         result["different"].append(rel)
@@ -231,6 +261,10 @@ def compare(args):
         if na is not None and na == nb:
             result["volatile"].append(rel)
             continue
+        ra = record_set(rel, da)
+        if ra is not None and ra == record_set(rel, db):
+            result["reordered"].append(rel)
+            continue
         if na is not None and args.rtol > 0:
             ok, worst = numeric_diff(na, nb, args.rtol, args.atol)
             if ok:
@@ -246,6 +280,7 @@ def compare(args):
     print(f"compared {total} files of {args.a} and {args.b}: "
           f"{len(result['identical'])} byte-identical, "
           f"{len(result['volatile'])} identical up to timings/dates/log order, "
+          f"{len(result['reordered'])} the same records in another order, "
           f"{len(result['round-off'])} within rtol {args.rtol:g} / atol {args.atol:g}"
           + (f" (largest {worst_roundoff:.3g})" if result["round-off"] else "")
           + f", {len(result['different'])} different")
@@ -274,6 +309,7 @@ def main():
     c.add_argument("--work", required=True)
     c.add_argument("a")
     c.add_argument("b")
+    c.add_argument("--jobs-only", help="compare only these jobs' outputs")
     b = sub.add_parser("both", help="run old and new, then compare")
     b.add_argument("--work", required=True)
     for side in ("old", "new"):
