@@ -115,15 +115,23 @@ NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|nan|inf")
 DURATION = re.compile(r"\b\d+(?:\.\d+)?(?:e[-+]?\d+)? ?(?:s|ms|min)\b")
 DATE = re.compile(r"\d{4}-\d{2}-\d{2}[ T]\d{2}:\d{2}(?::\d{2}(?:\.\d+)?)?(?: UTC)?")
 LOAD = re.compile(r"(load(?: average)?:?|end of this script:) \d+(?:\.\d+)?(?:, \d+(?:\.\d+)?)*")
-VOLATILE_KEY = re.compile(r"(^|_)(wall|cpu|seconds|elapsed)(_|$)|load_average|measured|^time")
+# Timings, and the last lines of a parallel sweep's log (which case ends last varies).
+VOLATILE_KEY = re.compile(
+    r"(^|_)(wall|cpu|seconds|elapsed)(_|$)|load_average|measured|^time|stderr_tail")
 PROGRESS = re.compile(r"(sweep:) \d+/")
+# The lines that say which test binary runs (the verification runs one or three).
+BINARY_BANNERS = ("Running main() from", "running: ")
+SOURCE_PATH = re.compile(r"[^\s:]*/tests/")
 TIME_HEADER = re.compile(r"time|measured", re.I)
 LOG_SUFFIXES = (".log", ".stderr")
+# What the verification's test binaries print: one binary's tests after another's.
+LOG_FILES = ("run.log", "verification.0.stdout")
 
 
 def mask_json(value):
     if isinstance(value, dict):
-        return {k: ("<volatile>" if VOLATILE_KEY.search(k) else mask_json(v))
+        return {k: ("<volatile>" if VOLATILE_KEY.search(k)
+                    else mask_json(v))
                 for k, v in value.items()}
     if isinstance(value, list):
         return [mask_json(v) for v in value]
@@ -134,6 +142,7 @@ def mask_json(value):
 
 def mask_text(text):
     text = DATE.sub("<date>", text)
+    text = SOURCE_PATH.sub("tests/", text)  # __FILE__ in test messages: as the build spelt it
     text = LOAD.sub(r"\1 <load>", text)
     text = PROGRESS.sub(r"\1 <n>/", text)
     return mask_table_columns(DURATION.sub("<duration>", text))
@@ -166,9 +175,10 @@ def normalised(path, data):
         except ValueError:
             pass
     text = mask_text(text)
-    if path.endswith(LOG_SUFFIXES) or os.path.basename(path) == "run.log":
+    if path.endswith(LOG_SUFFIXES) or os.path.basename(path) in LOG_FILES:
         # Parallel sweeps finish their cases in any order; progress lines overwrite themselves.
-        lines = [line for chunk in text.split("\n") for line in chunk.split("\r")]
+        lines = [line for chunk in text.split("\n") for line in chunk.split("\r")
+                 if not line.startswith(BINARY_BANNERS)]
         text = "\n".join(sorted(lines))
     return text
 

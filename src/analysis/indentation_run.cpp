@@ -145,24 +145,14 @@ PathResult run_active_set(IndentationSetup& s, const PathCallback& callback) {
                         });
 }
 
+// The run's status for the continuation's, in cont::Status's order (continuation/branch.hpp).
 RunStatus run_status(cont::Status s) {
-  switch (s) {
-    case cont::Status::kCompleted:
-      return RunStatus::kCompleted;
-    case cont::Status::kReachedBound:
-      return RunStatus::kReachedBound;
-    case cont::Status::kMaxSteps:
-      return RunStatus::kMaxSteps;
-    case cont::Status::kStepTooSmall:
-      return RunStatus::kStepTooSmall;
-    case cont::Status::kStoppedByCallback:
-      return RunStatus::kStopped;
-    case cont::Status::kStartFailed:
-      return RunStatus::kStartFailed;
-    case cont::Status::kRunning:
-      break;
-  }
-  return RunStatus::kFailed;
+  static_assert(static_cast<int>(cont::Status::kStartFailed) == 6, "cont::Status changed");
+  constexpr RunStatus kByStatus[] = {RunStatus::kFailed,  // kRunning: never returned
+                                     RunStatus::kCompleted, RunStatus::kReachedBound,
+                                     RunStatus::kMaxSteps,  RunStatus::kStepTooSmall,
+                                     RunStatus::kStopped,   RunStatus::kStartFailed};
+  return kByStatus[static_cast<int>(s)];
 }
 
 cont::Settings continuation_settings(const IndentationSetup& s) {

@@ -10,6 +10,17 @@ namespace {
 using G = GridInterpolation;
 using S = IndentationState;
 
+// Curvature component k (0: k11, 1: k12 + k21, 2: k22) of the extremes over the nodes in
+// contact, and its inverse.
+template <int k, bool largest>
+double extreme(const S& s) {
+  return largest ? s.contact_curvature_max[k] : s.contact_curvature_min[k];
+}
+template <int k, bool largest>
+void restore_extreme(PathPoint& p, double v) {
+  (largest ? p.state.contact_curvature_max : p.state.contact_curvature_min)[k] = v;
+}
+
 std::vector<ColumnSpec> make_columns() {
   std::vector<ColumnSpec> c = {
       {PathColumn::kDepth, "depth_mm", "mm",
@@ -114,24 +125,17 @@ std::vector<ColumnSpec> make_columns() {
           "; quarter models: max abs(k12)",
       std::string("smallest nodal curvature k22") + extremes,
       std::string("largest nodal curvature k22") + extremes};
-  c.push_back({PathColumn::kK11ContactMin, "k11_contact_min_per_mm", "1/mm", descriptions[0],
-               [](const S& s) { return s.contact_curvature_min[0]; }, nullptr,
-               [](PathPoint& p, double v) { p.state.contact_curvature_min[0] = v; }});
-  c.push_back({PathColumn::kK11ContactMax, "k11_contact_max_per_mm", "1/mm", descriptions[1],
-               [](const S& s) { return s.contact_curvature_max[0]; }, nullptr,
-               [](PathPoint& p, double v) { p.state.contact_curvature_max[0] = v; }});
-  c.push_back({PathColumn::kK12ContactMin, "k12_contact_min_per_mm", "1/mm", descriptions[2],
-               [](const S& s) { return s.contact_curvature_min[1]; }, nullptr,
-               [](PathPoint& p, double v) { p.state.contact_curvature_min[1] = v; }});
-  c.push_back({PathColumn::kK12ContactMax, "k12_contact_max_per_mm", "1/mm", descriptions[3],
-               [](const S& s) { return s.contact_curvature_max[1]; }, nullptr,
-               [](PathPoint& p, double v) { p.state.contact_curvature_max[1] = v; }});
-  c.push_back({PathColumn::kK22ContactMin, "k22_contact_min_per_mm", "1/mm", descriptions[4],
-               [](const S& s) { return s.contact_curvature_min[2]; }, nullptr,
-               [](PathPoint& p, double v) { p.state.contact_curvature_min[2] = v; }});
-  c.push_back({PathColumn::kK22ContactMax, "k22_contact_max_per_mm", "1/mm", descriptions[5],
-               [](const S& s) { return s.contact_curvature_max[2]; }, nullptr,
-               [](PathPoint& p, double v) { p.state.contact_curvature_max[2] = v; }});
+  const char* const names[6] = {"k11_contact_min_per_mm", "k11_contact_max_per_mm",
+                                "k12_contact_min_per_mm", "k12_contact_max_per_mm",
+                                "k22_contact_min_per_mm", "k22_contact_max_per_mm"};
+  double (*const value[6])(const S&) = {extreme<0, false>, extreme<0, true>,  extreme<1, false>,
+                                        extreme<1, true>,  extreme<2, false>, extreme<2, true>};
+  void (*const restore[6])(PathPoint&, double) = {
+      restore_extreme<0, false>, restore_extreme<0, true>,  restore_extreme<1, false>,
+      restore_extreme<1, true>,  restore_extreme<2, false>, restore_extreme<2, true>};
+  for (int i = 0; i < 6; ++i)
+    c.push_back({static_cast<PathColumn>(static_cast<int>(PathColumn::kK11ContactMin) + i),
+                 names[i], "1/mm", descriptions[i], value[i], nullptr, restore[i]});
   for (std::size_t i = 0; i < c.size(); ++i)
     SI_ASSERT(static_cast<std::size_t>(c[i].id) == i);  // the table is in PathColumn's order
   return c;

@@ -11,12 +11,7 @@ namespace si {
 
 const LocalApproach ContactRows::kNoApproach{};
 
-ContactRows::ContactRows(const ContactRowsSetting& setting)
-    : shell_(setting.shell),
-      body_(setting.body),
-      kappa_(setting.kappa),
-      ncp_(setting.ncp),
-      candidate_depth_(setting.candidate_depth) {}
+ContactRows::ContactRows(const ContactRowsSetting& setting) : setting_(setting) {}
 
 void ContactRows::set_candidates(const std::vector<int>& nodes) {
   candidates_ = nodes;
@@ -28,7 +23,7 @@ void ContactRows::add_pattern(Triplets& t) const {
   for (int i = 0; i < size(); ++i) {
     const int n = candidates_[i], m = first() + i;
     std::array<int, 5> eq{};
-    for (int l = 0; l < 5; ++l) eq[l] = shell_.dofs().equation(DofMap::dof(n, l));
+    for (int l = 0; l < 5; ++l) eq[l] = shell().dofs().equation(DofMap::dof(n, l));
     for (int r : eq) {
       if (r < 0) continue;
       t.emplace_back(r, m, 0.0);
@@ -47,7 +42,7 @@ void ContactRows::locate(const SparseMatrix& J) {
   for (int i = 0; i < size(); ++i) {
     Slots& s = slots_[i];
     const int m = first() + i;
-    for (int l = 0; l < 5; ++l) s.eq[l] = shell_.dofs().equation(DofMap::dof(candidates_[i], l));
+    for (int l = 0; l < 5; ++l) s.eq[l] = shell().dofs().equation(DofMap::dof(candidates_[i], l));
     for (int r = 0; r < 5; ++r) {
       s.column[r] = s.eq[r] >= 0 ? value_slot(J, s.eq[r], m) : -1;
       s.row[r] = s.eq[r] >= 0 ? value_slot(J, m, s.eq[r]) : -1;
@@ -75,9 +70,9 @@ double ContactRows::contact_gap(int i, const TermPoint& p, double depth, double 
 // of zero takes the derivatives of the touch, phi(lambda, 0): the generalised Jacobian's element
 // at the kink a roundoff away. The value, and so the solution, is that of the computed gap.
 NcpValue ContactRows::complementarity(double lambda, double gap) const {
-  NcpValue phi = ncp(ncp_, lambda, kappa_ * gap);
-  if (approach_->regularizes_touch() && std::abs(gap) <= body_.touch_roundoff()) {
-    const NcpValue touch = ncp(ncp_, lambda, 0.0);
+  NcpValue phi = ncp(setting_.ncp, lambda, kappa() * gap);
+  if (approach_->regularizes_touch() && std::abs(gap) <= body().touch_roundoff()) {
+    const NcpValue touch = ncp(setting_.ncp, lambda, 0.0);
     phi.d_a = touch.d_a;
     phi.d_b = touch.d_b;
   }
@@ -85,14 +80,14 @@ NcpValue ContactRows::complementarity(double lambda, double gap) const {
 }
 
 double ContactRows::multiplier_diagonal(int i, const NcpValue& phi) const {
-  return phi.d_a + phi.d_b * kappa_ * approach_->layer(candidates_[i], 1.0);
+  return phi.d_a + phi.d_b * kappa() * approach_->layer(candidates_[i], 1.0);
 }
 
 void ContactRows::add_multiplier_terms(int i, const NcpValue& phi, double dent_rate,
                                        double* J) const {
   const Slots& s = slots_[i];
   J[s.diagonal] += multiplier_diagonal(i, phi);
-  if (s.alpha_column >= 0) J[s.alpha_column] += phi.d_b * kappa_ * dent_rate;
+  if (s.alpha_column >= 0) J[s.alpha_column] += phi.d_b * kappa() * dent_rate;
 }
 
 void ContactRows::residual(const TermPoint& p, cont::Vector& F) {
@@ -110,7 +105,7 @@ void ContactRows::residual_p(const TermPoint& p, cont::Vector& out) {
     const double depth = face_depth(candidates_[i], p.z, p.h);
     if (!hits(i, p, depth)) continue;
     const NcpValue phi = complementarity(lambda, contact_gap(i, p, depth, lambda));
-    out[first() + i] = -phi.d_b * kappa_;
+    out[first() + i] = -phi.d_b * kappa();
   }
 }
 
@@ -118,7 +113,7 @@ void ContactRows::signature(const TermPoint& p, std::vector<int>& out) const {
   for (int i = 0; i < size(); ++i) {
     const double lambda = p.z[first() + i];
     const double depth = face_depth(candidates_[i], p.z, p.h);
-    out.push_back(lambda > kappa_ * contact_gap(i, p, depth, lambda));
+    out.push_back(lambda > kappa() * contact_gap(i, p, depth, lambda));
   }
 }
 
@@ -136,20 +131,20 @@ void ContactRows::active_gradients(const TermPoint& p, Triplets& out, int& next)
 }
 
 bool ContactRows::adapt(const TermPoint& p) {
-  const int nn = static_cast<int>(body_.face_points().size());
+  const int nn = static_cast<int>(body().face_points().size());
   std::vector<bool> is_candidate(nn, false);
   for (int n : candidates_) is_candidate[n] = true;
   // Every node not yet a candidate whose contact point is now within candidate_depth of the
   // indenter (measured as travel along its path): the set follows the deformed shell.
-  const double t0 = body_.first_touch();
+  const double t0 = body().first_touch();
   std::set<int> added;
   for (int n = 0; n < nn; ++n) {
     if (is_candidate[n]) continue;
     const double depth = face_depth(n, p.z, p.h);
-    const NodeContactGeometry& g0 = body_.geometry(n);
+    const NodeContactGeometry& g0 = body().geometry(n);
     const Vector3d x = g0.X + p.states[n].u + g0.offset * p.states[n].d;
-    const TravelGap g = travel_gap(body_.indenter(), body_.direction(), x, t0 + depth, false);
-    if (g.hits && g.travel - t0 - depth <= candidate_depth_) added.insert(n);
+    const TravelGap g = travel_gap(body().indenter(), body().direction(), x, t0 + depth, false);
+    if (g.hits && g.travel - t0 - depth <= setting_.candidate_depth) added.insert(n);
   }
   if (added.empty()) return false;
   candidates_.insert(candidates_.end(), added.begin(), added.end());
@@ -158,9 +153,9 @@ bool ContactRows::adapt(const TermPoint& p) {
 }
 
 void ContactRows::quantities(const TermPoint& p, IndentationState& out) const {
-  const ShellModel& model = shell_.model();
+  const ShellModel& model = shell().model();
   const double sym = model.symmetry_factor;
-  const Vector3d& e = body_.direction();
+  const Vector3d& e = body().direction();
   const double lambda_max = multipliers(p.z).cwiseAbs().maxCoeff();
   const Vector3d axis_point = model.mesh.nodes[model.apex_node()];
   out.force = 0;
@@ -170,7 +165,7 @@ void ContactRows::quantities(const TermPoint& p, IndentationState& out) const {
     out.force += lambda;
     if (lambda > 1e-9 * lambda_max && lambda > 0) {
       ++out.contact_nodes;
-      out.contact_area += sym * shell_.tributary_area(n);
+      out.contact_area += sym * shell().tributary_area(n);
       const Vector3d x = model.mesh.nodes[n] + p.states[n].u - axis_point;
       out.contact_radius = std::max(out.contact_radius, (x - x.dot(e) * e).norm());
     }
@@ -186,12 +181,12 @@ void ContactRows::outputs(const TermPoint& p, IndentationState& out) const {
   for (int i = 0; i < size(); ++i) {
     const double l = lambda[i];
     if (!(l > 1e-9 * lambda_max && l > 0)) continue;
-    const Vector3d k = shell_.curvature(p.states, candidates_[i]);
+    const Vector3d k = shell().curvature(p.states, candidates_[i]);
     out.contact_curvature_min = any ? out.contact_curvature_min.cwiseMin(k) : k;
     out.contact_curvature_max = any ? out.contact_curvature_max.cwiseMax(k) : k;
     any = true;
   }
-  if (any && shell_.model().symmetry_factor > 1) {
+  if (any && shell().model().symmetry_factor > 1) {
     const double k12 =
         std::max(std::abs(out.contact_curvature_min[1]), std::abs(out.contact_curvature_max[1]));
     out.contact_curvature_min[1] = -k12;

@@ -102,11 +102,11 @@ class ContactRows : public ContactTerm {
   // the diagonal and, with a power law's alpha, d g / d alpha = the dent's rate (`dent_rate`).
   void add_multiplier_terms(int i, const NcpValue& phi, double dent_rate, double* J) const;
 
-  const ShellPart& shell_;
-  const ContactBody& body_;
-  double kappa_;
-  NcpFunction ncp_;
-  double candidate_depth_;
+  const ShellPart& shell() const { return setting_.shell; }
+  const ContactBody& body() const { return setting_.body; }
+  double kappa() const { return setting_.kappa; }
+
+  const ContactRowsSetting setting_;
   std::vector<int> candidates_;
   std::vector<Slots> slots_;
 

@@ -11,9 +11,9 @@ constexpr double kFarGap = 1e6;  // mm
 NodeGap NodalGaps::gap(int i, const std::vector<NodeState>& s, double depth,
                        bool derivative) const {
   const int n = candidates_[i];
-  const double travel = body_.first_touch() + depth;
-  NodeGap g = shell_.gap(body_.indenter(), body_.direction(), body_.geometry(n), n, s, travel,
-                         touch_guess_[i], derivative);
+  const double travel = body().first_touch() + depth;
+  NodeGap g = shell().gap(body().indenter(), body().direction(), body().geometry(n), n, s, travel,
+                          touch_guess_[i], derivative);
   if (g.hits) {
     touch_guess_[i] = g.touch_travel;
   } else {
@@ -38,13 +38,13 @@ void NodalGaps::gradient(int i, const TermPoint& p,
 }
 
 double NodalGaps::pressure_area(int i) const {
-  return shell_.tributary_area(candidates_[i]);
+  return shell().tributary_area(candidates_[i]);
 }
 
 void NodalGaps::candidates_changed(bool appended) {
   // Appended candidates keep the guesses of the old ones.
   if (!appended) touch_guess_.clear();
-  touch_guess_.resize(candidates_.size(), body_.first_touch());
+  touch_guess_.resize(candidates_.size(), body().first_touch());
 }
 
 // r_free -= sum_i lambda_i G_i: the contact force lambda_i a and its moment on node i.
@@ -60,7 +60,7 @@ void NodalGaps::add_shell_force(const TermPoint& p, cont::Vector& r_free) {
 
 void NodalGaps::add_jacobian(const TermPoint& p, double* J,
                              std::vector<ContactJacobianRow>* condensed) {
-  const bool nonlinear = shell_.nonlinear();
+  const bool nonlinear = shell().nonlinear();
   for (int i = 0; i < size(); ++i) {
     const double lambda = p.z[first() + i];
     const DentValue dent = dent_at(candidates_[i], p.z);
@@ -72,13 +72,13 @@ void NodalGaps::add_jacobian(const TermPoint& p, double* J,
       row.eq = s.eq;
       for (int r = 0; r < 5; ++r) row.gradient[r] = g.gradient[r];
       row.a = multiplier_diagonal(i, phi);
-      row.b = phi.d_b * kappa_;
+      row.b = phi.d_b * kappa();
       condensed->push_back(row);
     }
     for (int r = 0; r < 5; ++r) {
       if (s.eq[r] < 0) continue;
       J[s.column[r]] -= g.gradient[r];
-      J[s.row[r]] += phi.d_b * kappa_ * g.gradient[r];
+      J[s.row[r]] += phi.d_b * kappa() * g.gradient[r];
       if (nonlinear && lambda != 0.0)
         for (int c = 0; c < 5; ++c)
           if (s.eq[c] >= 0) J[s.block[5 * r + c]] -= lambda * g.gradient_derivative(r, c);
@@ -94,7 +94,7 @@ SparseMatrix NodalGaps::gap_matrix(const TermPoint& reference) const {
     for (int l = 0; l < 5; ++l)
       if (slots_[i].eq[l] >= 0 && g.hits) t.emplace_back(i, slots_[i].eq[l], g.gradient[l]);
   }
-  SparseMatrix C(size(), shell_.size());
+  SparseMatrix C(size(), shell().size());
   C.setFromTriplets(t.begin(), t.end());
   return C;
 }

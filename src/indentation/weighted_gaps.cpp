@@ -8,16 +8,17 @@ namespace si {
 
 WeightedGaps::WeightedGaps(const ContactRowsSetting& setting, InterpolatedContactOptions options)
     : ContactRows(setting), options_(std::move(options)) {
-  SI_REQUIRE(!shell_.nonlinear(),
+  SI_REQUIRE(!shell().nonlinear(),
              "the interpolated contact traction is defined for linear kinematics only");
 }
 
 void WeightedGaps::candidates_changed(bool) {
-  const ShellModel& model = shell_.model();
-  const InterpolatedContact ic = integrate_interpolated_contact(
-      model.mesh, shell_.assembler(), *model.element,
-      ContactFace{body_.indenter(), body_.direction(), body_.face_offset(), body_.first_touch()},
-      candidates_, options_);
+  const ShellModel& model = shell().model();
+  const InterpolatedContact ic =
+      integrate_interpolated_contact(model.mesh, shell().assembler(), *model.element,
+                                     ContactFace{body().indenter(), body().direction(),
+                                                 body().face_offset(), body().first_touch()},
+                                     candidates_, options_);
   const Eigen::VectorXd inverse = ic.w.cwiseInverse();
   C_ = inverse.asDiagonal() * ic.C;
   C_.makeCompressed();
@@ -46,7 +47,7 @@ void WeightedGaps::locate(const SparseMatrix& J) {
 }
 
 double WeightedGaps::gap_value(int i, const TermPoint& p, double depth) const {
-  return g0_[i] - depth + C_.row(i).dot(p.z.head(shell_.size()));
+  return g0_[i] - depth + C_.row(i).dot(p.z.head(shell().size()));
 }
 
 void WeightedGaps::gradient(int i, const TermPoint&,
@@ -66,7 +67,7 @@ void WeightedGaps::add_jacobian(const TermPoint& p, double* J, std::vector<Conta
     const NcpValue phi = complementarity(lambda, contact_gap(k, p, p.h - dent.u, lambda));
     for (int e = C_.outerIndexPtr()[k]; e < C_.outerIndexPtr()[k + 1]; ++e) {
       J[column_[e]] -= C_.valuePtr()[e];
-      J[row_[e]] += phi.d_b * kappa_ * C_.valuePtr()[e];
+      J[row_[e]] += phi.d_b * kappa() * C_.valuePtr()[e];
     }
     add_multiplier_terms(k, phi, dent.rate, J);  // weighted gaps always reach the indenter
   }

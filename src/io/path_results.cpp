@@ -68,37 +68,17 @@ std::vector<double> interpolate(const PathPoint& a, const PathPoint& b, double d
 }  // namespace
 
 const char* run_method_name(RunMethod method) {
-  switch (method) {
-    case RunMethod::kLinearFastPath:
-      return "linear fast path";
-    case RunMethod::kActiveSet:
-      return "active_set";
-    case RunMethod::kNatural:
-      return "natural";
-    case RunMethod::kPseudoArclength:
-      break;
-  }
-  return "pseudo_arclength";
+  // In RunMethod's order.
+  const char* const names[] = {"linear fast path", "active_set", "natural", "pseudo_arclength"};
+  return names[static_cast<int>(method)];
 }
 
 const char* run_status_name(RunStatus status) {
-  switch (status) {
-    case RunStatus::kCompleted:
-      return "completed";
-    case RunStatus::kReachedBound:
-      return "reached_bound";
-    case RunStatus::kMaxSteps:
-      return "max_steps";
-    case RunStatus::kStepTooSmall:
-      return "step_too_small";
-    case RunStatus::kStopped:
-      return "stopped_by_callback";
-    case RunStatus::kStartFailed:
-      return "start_failed";
-    case RunStatus::kFailed:
-      break;
-  }
-  return "failed";
+  // In RunStatus's order.
+  const char* const names[] = {"completed",      "reached_bound",       "max_steps",
+                               "step_too_small", "stopped_by_callback", "start_failed",
+                               "failed"};
+  return names[static_cast<int>(status)];
 }
 
 std::string path_csv_header() {
