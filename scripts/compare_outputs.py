@@ -83,7 +83,9 @@ def stage(args):
     shutil.copytree(os.path.join(args.src, "studies"), os.path.join(root, "src", "studies"),
                     ignore=shutil.ignore_patterns("__pycache__"))
     os.makedirs(os.path.join(root, "out", "verification_doc"))
-    shutil.copy2(os.path.join(args.src, "docs", "verification.md"),
+    # The report's template: this side's docs/verification.md, or one given for both sides (its
+    # prose may change with the code; the generated tables are what is compared).
+    shutil.copy2(args.verification_doc or os.path.join(args.src, "docs", "verification.md"),
                  os.path.join(root, "out", "verification_doc", "verification.md"))
     return root
 
@@ -314,6 +316,7 @@ def main():
     r.add_argument("--src", required=True, help="the source tree whose studies/ to use")
     r.add_argument("--work", required=True)
     r.add_argument("--jobs-only", help=f"comma-separated subset of {','.join(JOBS)}")
+    r.add_argument("--verification-doc", help="template of the verification report")
     r.add_argument("-j", type=int, default=2)
     c = sub.add_parser("compare", help="compare two runs")
     c.add_argument("--work", required=True)
@@ -327,6 +330,7 @@ def main():
         b.add_argument(f"--{side}-tests")
         b.add_argument(f"--{side}-src", required=True)
     b.add_argument("--jobs-only")
+    b.add_argument("--verification-doc")
     b.add_argument("-j", type=int, default=2)
     for q in (c, b):
         q.add_argument("--rtol", type=float, default=0.0, help="numeric tolerance mode")
@@ -343,7 +347,8 @@ def main():
         side_args = argparse.Namespace(label=side, exe=getattr(args, f"{side}_exe"),
                                        tests=getattr(args, f"{side}_tests"),
                                        src=getattr(args, f"{side}_src"), work=args.work,
-                                       jobs_only=args.jobs_only, j=args.j)
+                                       jobs_only=args.jobs_only, j=args.j,
+                                       verification_doc=args.verification_doc)
         run_side(side_args)
     args.a, args.b = "old", "new"
     return compare(args)
