@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "analysis/static_solver.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "io/case_file.hpp"
@@ -15,7 +16,6 @@
 #include "io/result_fields.hpp"
 #include "io/vtu_writer.hpp"
 #include "model/shell_model.hpp"
-#include "model/static_solver.hpp"
 
 namespace si {
 namespace {

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
+#include "analysis/static_solver.hpp"
 #include "core/error.hpp"
 #include "model/assembler.hpp"
 #include "model/dof_map.hpp"
-#include "model/static_solver.hpp"
 #include "model/supports.hpp"
 #include "test_meshes.hpp"
 

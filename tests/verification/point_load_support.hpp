@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "analysis/static_solver.hpp"
 #include "io/case_file.hpp"
 #include "model/assembler.hpp"
 #include "model/shell_model.hpp"
-#include "model/static_solver.hpp"
 
 namespace si::testing {
 

@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
+#include "analysis/static_solver.hpp"
 #include "model/assembler.hpp"
 #include "model/loads.hpp"
 #include "model/mesh.hpp"
-#include "model/static_solver.hpp"
 #include "model/supports.hpp"
 #include "section/gauss_legendre.hpp"
 #include "shell/shape4.hpp"

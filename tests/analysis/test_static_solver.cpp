@@ -1,14 +1,14 @@
-#include "model/static_solver.hpp"
+#include "analysis/static_solver.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <sstream>
 
+#include "../model/spring_net_element.hpp"
+#include "../model/test_meshes.hpp"
 #include "core/error.hpp"
 #include "model/supports.hpp"
-#include "spring_net_element.hpp"
-#include "test_meshes.hpp"
 
 namespace si {
 namespace {

@@ -1,4 +1,4 @@
-#include "model/static_solver.hpp"
+#include "analysis/static_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
