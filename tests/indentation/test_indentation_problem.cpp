@@ -7,6 +7,7 @@
 
 #include "analysis/indentation_run.hpp"
 #include "indentation/active_set_solver.hpp"
+#include "indentation/linear_indentation.hpp"
 
 #include "indentation_test_support.hpp"
 #include "section/vam_section.hpp"
@@ -117,6 +118,40 @@ TEST(IndentationProblem, StartsAtFirstTouchWithNoForce) {
   ASSERT_TRUE(f.problem->residual(f.problem->initial_point(), 0.0, F));
   EXPECT_LT(F.cwiseAbs().maxCoeff(), 1e-9 * f.problem->stiffness_scale());
   EXPECT_GT(f.problem->candidates().size(), 1u);
+}
+
+// The gradients of the active constraints (for the tangent restricted to them, issue 15): one
+// row per candidate the signature calls active, and, with linear kinematics (gradients frozen at
+// the reference state), those rows of the fast path's contact matrix C; the nodal gaps' and the
+// weighted gaps' alike.
+void expect_active_gradients_are_active_rows_of_c(const std::string& traction) {
+  CaseFile c = coarse_cap_case("linear", "[0/90]2S");
+  c.contact.traction =
+      traction == "interpolated" ? ContactTraction::kInterpolated : ContactTraction::kNodal;
+  IndentationSetup s(c, 1);
+  const double h = 2.0;
+  const cont::Vector z = LinearIndentation(*s.problem).solve(h);
+  const std::vector<int> active = s.problem->signature(z, h);
+  const SparseMatrix G = s.problem->active_constraint_gradients(z, h);
+  const Eigen::MatrixXd C = Eigen::MatrixXd(s.problem->contact_matrix());
+  int rows = 0;
+  for (std::size_t i = 0; i < active.size(); ++i) {
+    if (!active[i]) continue;
+    ASSERT_LT(rows, G.rows());
+    const Eigen::RowVectorXd g = Eigen::MatrixXd(G).row(rows++);
+    EXPECT_LE((g - C.row(static_cast<Eigen::Index>(i))).norm(), 1e-14 * C.norm()) << i;
+  }
+  EXPECT_EQ(rows, G.rows());
+  EXPECT_GT(rows, 1);                                // the depth presses several nodes
+  EXPECT_LT(rows, static_cast<int>(active.size()));  // and leaves candidates open
+}
+
+TEST(IndentationProblem, ActiveConstraintGradientsAreTheActiveRowsOfC_NodalGaps) {
+  expect_active_gradients_are_active_rows_of_c("nodal");
+}
+
+TEST(IndentationProblem, ActiveConstraintGradientsAreTheActiveRowsOfC_WeightedGaps) {
+  expect_active_gradients_are_active_rows_of_c("interpolated");
 }
 
 }  // namespace
