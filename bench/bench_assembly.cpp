@@ -10,8 +10,8 @@
 #include <memory>
 
 #include "model/assembler.hpp"
-#include "model/linear_solver.hpp"
 #include "model/supports.hpp"
+#include "solvers/linear_solver.hpp"
 #include "spring_net_element.hpp"
 #include "test_meshes.hpp"
 
@@ -101,7 +101,7 @@ void BM_CholmodAnalyze(benchmark::State& st) {
   Assembly out = a.make_assembly();
   a.assemble(p.state, {}, out);
   for (auto _ : st) {
-    auto solver = make_linear_solver("cholmod");
+    auto solver = make_linear_solver(LinearSolverKind::kCholmod);
     solver->analyze(out.tangent);
   }
   st.counters["dofs"] = p.dofs.num_free();
@@ -112,7 +112,8 @@ void BM_CholmodFactorize(benchmark::State& st) {
   const Assembler a(p.mesh, p.dofs, p.element, testing::unused_law(), Kinematics::kNonlinear);
   Assembly out = a.make_assembly();
   a.assemble(p.state, {}, out);
-  auto solver = make_linear_solver(st.range(1) == 0 ? "cholmod" : "umfpack");
+  auto solver = make_linear_solver(st.range(1) == 0 ? LinearSolverKind::kCholmod
+                                                    : LinearSolverKind::kUmfpack);
   solver->analyze(out.tangent);
   for (auto _ : st) solver->factorize(out.tangent);
   st.SetLabel(solver->name());
@@ -125,7 +126,7 @@ void BM_AssemblyPlusFactorize(benchmark::State& st) {
   const Assembler a(p.mesh, p.dofs, p.element, testing::unused_law(), Kinematics::kNonlinear);
   Assembly out = a.make_assembly();
   a.assemble(p.state, {}, out);
-  auto solver = make_linear_solver("cholmod");
+  auto solver = make_linear_solver(LinearSolverKind::kCholmod);
   solver->analyze(out.tangent);
   for (auto _ : st) {
     a.assemble(p.state, {}, out);

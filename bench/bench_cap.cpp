@@ -10,11 +10,11 @@
 
 #include <string>
 
-#include "analysis/shell_model.hpp"
 #include "io/case_file.hpp"
 #include "model/assembler.hpp"
-#include "model/linear_solver.hpp"
+#include "model/shell_model.hpp"
 #include "model/supports.hpp"
+#include "solvers/linear_solver.hpp"
 
 namespace si {
 namespace {
@@ -61,7 +61,7 @@ void BM_CapFactorize(benchmark::State& st) {
   const Problem p(st);
   Assembly out = p.assembler.make_assembly();
   p.assembler.assemble(p.state, {}, out);
-  auto solver = make_linear_solver("cholmod");
+  auto solver = make_linear_solver(LinearSolverKind::kCholmod);
   solver->analyze(out.tangent);
   for (auto _ : st) solver->factorize(out.tangent);
   st.counters["dofs"] = p.dofs.num_free();
@@ -73,7 +73,7 @@ void BM_CapAssemblyPlusFactorize(benchmark::State& st) {
   const Problem p(st);
   Assembly out = p.assembler.make_assembly();
   p.assembler.assemble(p.state, {}, out);
-  auto solver = make_linear_solver("cholmod");
+  auto solver = make_linear_solver(LinearSolverKind::kCholmod);
   solver->analyze(out.tangent);
   for (auto _ : st) {
     p.assembler.assemble(p.state, {}, out);

@@ -74,7 +74,8 @@ void BM_LinearPath(benchmark::State& st) {
 // 100 depths by natural continuation with the KINSOL corrector (setup included, small).
 void BM_NonlinearPath(benchmark::State& st) {
   for (auto _ : st) {
-    const char* solvers[] = {"umfpack", "klu", kPreconditionedKrylov};
+    const JacobianSolverKind solvers[] = {JacobianSolverKind::kUmfpack, JacobianSolverKind::kKlu,
+                                          JacobianSolverKind::kPreconditionedKrylov};
     IndentationSetup s(paper_cap(st, "nonlinear", st.range(3) / 10.0),
                        static_cast<int>(st.range(4)), solvers[st.range(2)]);
     const PathResult r = run_indentation_path(s);

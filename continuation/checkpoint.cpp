@@ -1,7 +1,6 @@
 #include "continuation/checkpoint.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -227,23 +226,20 @@ State to_state(const json& j) {
 
 }  // namespace
 
-void save_checkpoint(const std::string& path, const Checkpoint& checkpoint, bool points_x) {
+std::string checkpoint_text(const Checkpoint& checkpoint, bool points_x) {
   json j = {{"format", kFormat},
             {"version", kVersion},
             {"method", method_name(checkpoint.method)},
             {"branch", branch_json(checkpoint.branch, points_x)},
             {"state", state_json(checkpoint.state)}};
   if (!checkpoint.attachment.is_null()) j["attachment"] = checkpoint.attachment;
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write checkpoint '" + tmp + "'");
-    out << j.dump() << '\n';
-    out.flush();
-    if (!out) throw std::runtime_error("error writing checkpoint '" + tmp + "'");
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    throw std::runtime_error("cannot rename checkpoint '" + tmp + "' to '" + path + "'");
+  return j.dump() + '\n';
+}
+
+void save_checkpoint(const std::string& path, const Checkpoint& checkpoint, bool points_x,
+                     const FileWriter& write) {
+  if (!write) throw std::invalid_argument("save_checkpoint: no file writer");
+  write(path, checkpoint_text(checkpoint, points_x));
 }
 
 Checkpoint load_checkpoint(const std::string& path) {

@@ -20,11 +20,15 @@ struct Checkpoint {
   nlohmann::json attachment;
 };
 
-// Writes `path` atomically: to "<path>.tmp" first, then renamed over `path`, so a run killed
-// while writing leaves the previous checkpoint intact. Throws std::runtime_error on I/O errors.
-// With points_x = false the branch's points and events are written without x (see
-// Settings::checkpoint_keeps_x); the state keeps its x in any case.
-void save_checkpoint(const std::string& path, const Checkpoint& checkpoint, bool points_x = true);
+// The checkpoint as JSON text. With points_x = false the branch's points and events are written
+// without x (see Settings::checkpoint_keeps_x); the state keeps its x in any case.
+std::string checkpoint_text(const Checkpoint& checkpoint, bool points_x = true);
+
+// Hands checkpoint_text to `write` for `path`. The library does no file I/O of its own: the
+// writer (Settings::checkpoint_writer) must replace the file atomically, so that a run killed
+// while writing leaves the previous checkpoint intact.
+void save_checkpoint(const std::string& path, const Checkpoint& checkpoint, bool points_x,
+                     const FileWriter& write);
 
 // Throws std::runtime_error naming the file when it cannot be read or is not a checkpoint.
 Checkpoint load_checkpoint(const std::string& path);

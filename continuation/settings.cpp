@@ -119,6 +119,8 @@ void Settings::validate() const {
                 "') needs two different monitor names");
   require_field(checkpoint_interval >= 0, c, "checkpoint_interval", checkpoint_interval,
                 "must be >= 0");
+  require(checkpoint_path.empty() || checkpoint_writer,
+          c + ".checkpoint_path = '" + checkpoint_path + "' needs a checkpoint_writer");
   require(checkpoint_interval == 0 || !checkpoint_path.empty(),
           c + ".checkpoint_interval = " + std::to_string(checkpoint_interval) +
               " needs a checkpoint_path");

@@ -12,6 +12,10 @@
 
 namespace si::cont {
 
+// Writes `content` to the file `path`, replacing it atomically (readers see the old file or the
+// new one, never a part). The caller's: the library does no file output of its own.
+using FileWriter = std::function<void(const std::string& path, const std::string& content)>;
+
 // The KINSOL Newton corrector (kinsol_corrector.hpp). Convergence: ||F||_inf <= tol with
 // tol = relative_tolerance * max(||F(x_start)||_inf, residual_scale).
 struct NewtonSettings {
@@ -113,8 +117,10 @@ struct Settings {
   // Checkpoints (checkpoint.hpp): written atomically every checkpoint_interval accepted steps
   // (after the callback has seen the point) and when the run ends, except when the callback
   // stopped it: a stopped run keeps its last periodic checkpoint, from which a resume repeats
-  // the points after it bit for bit (see Problem::reset_solver_caches). Empty path = none.
+  // the points after it bit for bit (see Problem::reset_solver_caches). They are written by
+  // checkpoint_writer (required with a path). Empty path = none.
   std::string checkpoint_path;
+  FileWriter checkpoint_writer;
   int checkpoint_interval = 0;
   // The caller's own record of the run (e.g. the quantities it derived from each point), saved
   // in the same file by the same atomic write, so that the two can never be out of step;

@@ -283,7 +283,7 @@ class Tracer {
     const nlohmann::json attachment =
         settings_.checkpoint_attachment ? settings_.checkpoint_attachment() : nlohmann::json();
     save_checkpoint(settings_.checkpoint_path, {stepper_.method(), branch_, state_, attachment},
-                    settings_.checkpoint_keeps_x);
+                    settings_.checkpoint_keeps_x, settings_.checkpoint_writer);
   }
 
   Problem& problem_;

@@ -12,11 +12,12 @@ from study_support import poly_coefficients, poly_value
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from result_columns import DEPTH_MM, FORCE_N, K11_PER_MM, K12_PER_MM, K22_PER_MM  # noqa: E402
 
 DPI = 100
 # The three lay-ups of the paper's Figs 7, 10 and 11 (angle ply, cross ply, "symmetric" ply).
 PAPER_FIG10_LAYUPS = ("[45/-45]2S", "[0/90]2S", "[30/-30]2S")
-CURVATURES = (("k11_per_mm", "k11"), ("k12_per_mm", "k12 + k21"), ("k22_per_mm", "k22"))
+CURVATURES = ((K11_PER_MM, "k11"), (K12_PER_MM, "k12 + k21"), (K22_PER_MM, "k22"))
 
 
 def save(fig, directory, name):
@@ -38,8 +39,8 @@ def force_depth(cases, directory):
     for c in cases:
         if not c["rows"]:
             continue
-        h = [r["depth_mm"] for r in c["rows"]]
-        line, = ax.plot(h, [r["force_N"] / 1000 for r in c["rows"]], "-", label=c["layup"])
+        h = [r[DEPTH_MM] for r in c["rows"]]
+        line, = ax.plot(h, [r[FORCE_N] / 1000 for r in c["rows"]], "-", label=c["layup"])
         if isinstance(c.get("C1"), float):
             ax.plot(h, [c["C1"] * x ** c["C2"] / 1000 for x in h], "--", color=line.get_color(),
                     lw=0.8)
@@ -85,7 +86,7 @@ def coefficients_theta(theta_rows, fits, cases, directory, paper_eqs):
 
 
 def critical_points(case, against):
-    return [(e["force_N"], e) for e in case["events"]
+    return [(e[FORCE_N], e) for e in case["events"]
             if e.get("type") == "inflection" and e.get("against") == against]
 
 
@@ -96,7 +97,7 @@ def force_curvature(cases, directory):
     for c in by_layup(cases, PAPER_FIG10_LAYUPS):
         for a, (col, label) in zip(ax, CURVATURES):
             k = [r[col] for r in c["rows"]]
-            line, = a.plot(k, [r["force_N"] / 1000 for r in c["rows"]], "-", label=c["layup"])
+            line, = a.plot(k, [r[FORCE_N] / 1000 for r in c["rows"]], "-", label=c["layup"])
             for force, e in critical_points(c, col)[:1]:
                 a.plot([e[col]], [force / 1000], "o", ms=8, mfc="none", color=line.get_color())
             a.set_xlabel(f"apex curvature {label} (1/mm)")
@@ -113,7 +114,7 @@ def curvature_depth(cases, directory):
     """Fig 11 analogue: apex curvatures against the depth."""
     fig, ax = plt.subplots(1, 3, figsize=(14, 4.2), sharey=False)
     for a, c in zip(ax, by_layup(cases, PAPER_FIG10_LAYUPS)):
-        h = [r["depth_mm"] for r in c["rows"]]
+        h = [r[DEPTH_MM] for r in c["rows"]]
         for col, label in CURVATURES:
             a.plot(h, [r[col] for r in c["rows"]], "-", label=label)
         a.set_title(c["layup"])
@@ -151,8 +152,8 @@ def variants_force_depth(results, directory, layups=("[0/0]2S", "[0/90]2S")):
     for a, layup in zip(ax, layups):
         for name, cases in results.items():
             for c in by_layup(cases, [layup]):
-                a.plot([r["depth_mm"] for r in c["rows"]],
-                       [r["force_N"] / 1000 for r in c["rows"]], "-", label=name)
+                a.plot([r[DEPTH_MM] for r in c["rows"]],
+                       [r[FORCE_N] / 1000 for r in c["rows"]], "-", label=name)
         a.set_title(f"{layup}: the paper's choices one at a time")
         a.set_xlabel("depth h (mm)")
         a.set_ylabel("T_N (kN)")

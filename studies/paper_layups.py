@@ -38,6 +38,7 @@ import paper_report
 from study_support import (C2_PHYSICAL_RANGE, SOURCE_DIR, STUDIES_DIR, StudyError, case_dirs,
                            column, default_exe, fit_cli, interpolate, load_path,
                            measured_wall_time, run_sweep, theta_of, write_csv)
+from result_columns import DEPTH_MM, ENERGY_NMM, FORCE_N, WORK_NMM
 
 # Variant name -> (study file in studies/, what it changes with respect to the default).
 VARIANTS = {
@@ -99,7 +100,7 @@ def grid_fit(exe, case_dir, depth_max):
     data = grid if os.path.exists(grid) else os.path.join(case_dir, "path.csv")
     if not os.path.exists(data):
         return {}
-    doc = fit_cli(exe, data, "depth_mm", "force_N", "power",
+    doc = fit_cli(exe, data, DEPTH_MM, FORCE_N, "power",
                   os.path.join(case_dir, "grid.fit-power.json"),
                   [f"--range={GRID_STEP_MM}:{depth_max}"])
     out = {"fit_status": doc["status"], "R2": doc["statistics"]["r_squared"],
@@ -122,11 +123,11 @@ def case_results(exe, run, depth_max):
     for c in doc["cases"]:
         case_dir = dirs.get(int(c["case"]), "")
         rows, events = load_path(case_dir)
-        depth = column(rows, "depth_mm") if rows else []
-        at = {h: interpolate(depth, column(rows, "force_N"), h) if rows else None
+        depth = column(rows, DEPTH_MM) if rows else []
+        at = {h: interpolate(depth, column(rows, FORCE_N), h) if rows else None
               for h in REPORT_DEPTHS_MM + (depth_max,)}
-        energy = interpolate(depth, column(rows, "energy_Nmm"), depth_max) if rows else None
-        work = interpolate(depth, column(rows, "work_Nmm"), depth_max) if rows else None
+        energy = interpolate(depth, column(rows, ENERGY_NMM), depth_max) if rows else None
+        work = interpolate(depth, column(rows, WORK_NMM), depth_max) if rows else None
         cases.append({
             "layup": c.get("laminate.layup"), "theta_deg": theta_of(c.get("laminate.layup")),
             "status": c.get("status"), "reason": c.get("reason"),

@@ -12,6 +12,7 @@ import re
 import paper_data
 from study_support import (clt_bending_stiffness, effective_bending_stiffness, interpolate,
                            poly_coefficients, poly_value, write_csv)
+from result_columns import DEPTH_MM, FORCE_N
 
 TABLE_COLUMNS = ["layup", "theta_deg", "status", "fit_status", "C1", "C1_lo", "C1_hi", "C2",
                  "C2_lo", "C2_hi", "R2", "grid_points", "C1_points", "C2_points", "R2_points",
@@ -391,7 +392,7 @@ def symmetry_paragraph(results):
 
 def secant_stiffnesses(case, spans=((0.0, 1.0), (2.0, 5.0), (5.0, 10.0))):
     """'11.5 kN/mm over 0-1 mm, ...': the slope of T_N(h) over each span of depths."""
-    h, f = [r["depth_mm"] for r in case["rows"]], [r["force_N"] for r in case["rows"]]
+    h, f = [r[DEPTH_MM] for r in case["rows"]], [r[FORCE_N] for r in case["rows"]]
     out = []
     for a, b in spans:
         fa, fb = interpolate(h, f, a), interpolate(h, f, b)

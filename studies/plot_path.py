@@ -19,6 +19,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from result_columns import (  # noqa: E402
+    CONTACT_RADIUS_MM, DEPTH_MM, FORCE_N, K11_PER_MM, K22_PER_MM)
 
 
 def column(rows, name):
@@ -35,32 +37,32 @@ def main(directory, png_path):
     grid_path = os.path.join(directory, "path_grid.csv")
     # The grid reports a depth once: where a snap-back makes the path pass depths again, the
     # curve is drawn through the points themselves.
-    monotone = all(b >= a for a, b in zip(column(rows, "depth_mm"), column(rows, "depth_mm")[1:]))
+    monotone = all(b >= a for a, b in zip(column(rows, DEPTH_MM), column(rows, DEPTH_MM)[1:]))
     curve = read_rows(grid_path) if monotone and os.path.exists(grid_path) else rows
     events_path = os.path.join(directory, "events.json")
     events = json.load(open(events_path)) if os.path.exists(events_path) else []
-    depth = column(rows, "depth_mm")
-    force = [F / 1000 for F in column(rows, "force_N")]
-    curve_force = [F / 1000 for F in column(curve, "force_N")]
+    depth = column(rows, DEPTH_MM)
+    force = [F / 1000 for F in column(rows, FORCE_N)]
+    curve_force = [F / 1000 for F in column(curve, FORCE_N)]
     fig, ax = plt.subplots(1, 3, figsize=(14, 4.2))
-    line = ax[0].plot(column(curve, "depth_mm"), curve_force, "-", label="contact force $T_N$")
+    line = ax[0].plot(column(curve, DEPTH_MM), curve_force, "-", label="contact force $T_N$")
     ax[0].plot(depth, force, "o", ms=3, color=line[0].get_color(), label="converged points")
     for e in events:
         if e["type"] in ("monitor_max", "limit_point"):
-            ax[0].plot(e["depth_mm"], e["force_N"] / 1000, "rv", ms=9, label=e["type"])
+            ax[0].plot(e[DEPTH_MM], e[FORCE_N] / 1000, "rv", ms=9, label=e["type"])
     ax[0].set_xlabel("depth h (mm)")
     ax[0].set_ylabel("force (kN)")
     ax[0].grid(True, alpha=0.3)
     ax[0].legend()
-    ax[1].plot(depth, column(rows, "contact_radius_mm"), "s-", ms=3)
+    ax[1].plot(depth, column(rows, CONTACT_RADIUS_MM), "s-", ms=3)
     ax[1].set_xlabel("depth h (mm)")
     ax[1].set_ylabel("contact radius (mm)")
     ax[1].grid(True, alpha=0.3)
-    for key, label in (("k11_per_mm", "$\\kappa_{11}$"), ("k22_per_mm", "$\\kappa_{22}$")):
+    for key, label in ((K11_PER_MM, "$\\kappa_{11}$"), (K22_PER_MM, "$\\kappa_{22}$")):
         ax[2].plot(column(curve, key), curve_force, "-", label=label)
     for e in events:
         if e["type"] == "inflection":
-            ax[2].plot(e[e["against"]], e["force_N"] / 1000, "kx", ms=9)
+            ax[2].plot(e[e["against"]], e[FORCE_N] / 1000, "kx", ms=9)
     ax[2].set_xlabel("apex curvature (1/mm); x = inflection (critical force)")
     ax[2].set_ylabel("force (kN)")
     ax[2].grid(True, alpha=0.3)

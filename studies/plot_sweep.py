@@ -20,6 +20,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from study_support import theta_of  # noqa: E402  (lay-up -> theta, shared with the studies)
+from result_columns import DEPTH_MM, FORCE_N  # noqa: E402
 
 
 def x_value(case, key):
@@ -71,8 +72,8 @@ def plot_paths(ax, directory, doc):
             continue
         with open(path, newline="") as f:
             rows = list(csv.DictReader(f))
-        ax.plot([float(r["depth_mm"]) for r in rows],
-                [float(r["force_N"]) / 1000 for r in rows], "-", label=sub)
+        ax.plot([float(r[DEPTH_MM]) for r in rows],
+                [float(r[FORCE_N]) / 1000 for r in rows], "-", label=sub)
     ax.set_xlabel("depth h (mm)")
     ax.set_ylabel("contact force T_N (kN)")
     ax.set_title(f"{doc['name']}: T_N(h)")

@@ -46,6 +46,7 @@ from study_support import (  # noqa: E402
     C2_PHYSICAL_RANGE, SOURCE_DIR, STUDIES_DIR, case_dirs, clt_bending_stiffness, column,
     default_exe, effective_bending_stiffness, interpolate, load_path, measured_wall_time,
     run_sweep, write_csv)
+from result_columns import DEPTH_MM, FORCE_N  # noqa: E402
 
 CASE_FILE = os.path.join(STUDIES_DIR, "sandwich_cap.yaml")
 UNITS = {"mm": 1.0, "MPa": 1.0, "GPa": 1e3}
@@ -103,7 +104,7 @@ def estimates(props):
 
 def travel_in_series(rows, k_local):
     """(force, travel) of the shell path plus a linear local spring: travel = h + F / k."""
-    return [(r["force_N"], r["depth_mm"] + r["force_N"] / k_local) for r in rows]
+    return [(r[FORCE_N], r[DEPTH_MM] + r[FORCE_N] / k_local) for r in rows]
 
 
 # ---- 3. Figure and report -------------------------------------------------------------------
@@ -112,19 +113,19 @@ def figure(paths, est, directory):
     fig, ax = plt.subplots(figsize=(7.5, 4.8))
     nl = paths.get("nonlinear", [])
     for name, rows in paths.items():
-        ax.plot(column(rows, "depth_mm"), column(rows, "force_N"), "-",
+        ax.plot(column(rows, DEPTH_MM), column(rows, FORCE_N), "-",
                 label=f"ours, shell deflection only ({name})")
     for key, label in (("k_winkler_N_per_mm", "ours + local, Winkler core"),
                        ("k_halfspace_N_per_mm", "ours + local, half-space core")):
         pts = travel_in_series(nl, est[key])
         ax.plot([t for _, t in pts], [f for f, _ in pts], "--", label=label)
-    hmax = max((r["depth_mm"] for r in nl), default=1.0)
+    hmax = max((r[DEPTH_MM] for r in nl), default=1.0)
     ax.plot([0, hmax], [0, est["k_winkler_N_per_mm"] * hmax], ":", label="local only, Winkler")
     ax.axhline(est["crush_onset_N"], color="k", lw=0.8, ls="-.",
                label=f"core crushing onset (Winkler) {est['crush_onset_N']:.0f} N")
     ax.set_xlabel("indenter travel (mm)")
     ax.set_ylabel("contact force (N)")
-    ax.set_ylim(0, max([r["force_N"] for r in nl] + [est["crush_onset_N"] * 1.5]))
+    ax.set_ylim(0, max([r[FORCE_N] for r in nl] + [est["crush_onset_N"] * 1.5]))
     ax.set_title("sandwich on the paper's cap: shell model and local core indentation")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7)
@@ -137,12 +138,12 @@ def figure(paths, est, directory):
 
 def travel_table(nl, est):
     rows = []
-    depth, force = column(nl, "depth_mm"), column(nl, "force_N")
+    depth, force = column(nl, DEPTH_MM), column(nl, FORCE_N)
     for f in FORCES_N:
         h = interpolate(force, depth, f)
         if h is None:
             continue
-        rows.append({"force_N": f, "shell_deflection_mm": h,
+        rows.append({FORCE_N: f, "shell_deflection_mm": h,
                      "winkler_local_mm": f / est["k_winkler_N_per_mm"],
                      "halfspace_local_mm": f / est["k_halfspace_N_per_mm"],
                      "travel_winkler_mm": h + f / est["k_winkler_N_per_mm"],
@@ -288,7 +289,7 @@ def main():
             problems.append(f"{c.get('kinematics')}: C2 = {c['C2']:.4g} outside {C2_PHYSICAL_RANGE}")
     if not 0 < est["k_winkler_N_per_mm"] < est["k_halfspace_N_per_mm"] * 10:
         problems.append("local stiffness estimates are not positive and comparable")
-    write_csv(os.path.join(out, "estimates.csv"), list(table[0]) if table else ["force_N"], table)
+    write_csv(os.path.join(out, "estimates.csv"), list(table[0]) if table else [FORCE_N], table)
     with open(os.path.join(out, "summary.json"), "w") as f:
         json.dump({"properties": props, "estimates": est, "table": table,
                    "sweep_wall_s": sweep["wall_s"], "problems": problems}, f, indent=1)

@@ -1,11 +1,13 @@
 #!/usr/bin/python3
-"""Verification study (issue 6): runs the verification tests of the gtest binary, collects the
+"""Verification study (issue 6): runs the verification tests of the gtest binaries, collects the
 checks they record (tests/verification_record.hpp) and writes the report.
 
 Every verification test computes its value, asserts it against the reference and, when the
 environment variable SHELLINDENT_VERIFICATION_RECORD names a file, appends one JSON line per
 check: table, check, reference, measured, error, tolerance, source, test. This script sets the
-variable, runs the binary, and from the records writes
+variable, runs the binaries (the toolkit's, and the continuation and fitting libraries' own), and
+from the records, ordered by the document's tables (each table's rows in the order its tests
+ran, whichever binary or file holds them), writes
 
   OUT/verification.csv, OUT/verification.json   one row per check, with pass/fail
   OUT/verification.png                          |error| / tolerance per check, by table
@@ -16,7 +18,7 @@ so that the numbers of the report are those of the tests ctest runs and cannot d
 code. Prose and rows without a record stay hand-written outside the markers.
 
 Usage (from the source tree, after building):
-  /usr/bin/python3 studies/verification.py --tests build/tests/shellindent_tests
+  /usr/bin/python3 studies/verification.py     (build/tests/{shellindent,continuation,fitting}_tests)
   /usr/bin/python3 studies/verification.py --quick --tests ... --out build/verification_quick
   /usr/bin/python3 studies/verification.py --records OUT/records.jsonl   (report only, no run)
   /usr/bin/python3 studies/verification.py --self-test
@@ -301,16 +303,29 @@ def write_figure(path, records):
 
 # ---- running -------------------------------------------------------------------------------
 
-def run_tests(binary, gtest_filter, records_path):
-    """Runs the binary with the recorder on; returns whether it passed."""
+def run_tests(binaries, gtest_filter, records_path):
+    """Runs each binary with the recorder on (records appended to one file); returns whether
+    all passed."""
     if os.path.exists(records_path):
         os.remove(records_path)
     env = dict(os.environ)
     env[RECORD_VARIABLE] = records_path
-    command = [binary, f"--gtest_filter={gtest_filter}", "--gtest_brief=1"]
-    print("running:", " ".join(command), flush=True)
-    result = subprocess.run(command, env=env)
-    return result.returncode == 0
+    passed = True
+    for binary in binaries:
+        command = [binary, f"--gtest_filter={gtest_filter}", "--gtest_brief=1"]
+        print("running:", " ".join(command), flush=True)
+        passed = subprocess.run(command, env=env).returncode == 0 and passed
+    return passed
+
+
+def in_document_order(records, doc_path):
+    """The records grouped by table in the order the document's markers name the tables (then
+    tables without a marker, in the order they first ran), each table's records in run order: the
+    order of the outputs does not depend on which binary or source file holds a test."""
+    ids = marker_ids(open(doc_path).read()) if doc_path and os.path.exists(doc_path) else []
+    tables = by_table(records)
+    order = [t for t in ids if t in tables] + [t for t in tables if t not in ids]
+    return [r for t in order for r in tables[t]]
 
 
 def report(records, binary_ok, out_dir, doc_in, doc_out, figure_paths, filter_name):
@@ -387,9 +402,11 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true",
                         help="fast subset; writes the markdown into --out, never into docs/")
-    parser.add_argument("--tests", default=os.path.join(SOURCE_DIR, "build", "tests",
-                                                        "shellindent_tests"),
-                        help="the gtest binary (default build/tests/shellindent_tests)")
+    parser.add_argument("--tests", nargs="+",
+                        default=[os.path.join(SOURCE_DIR, "build", "tests", name) for name in
+                                 ("shellindent_tests", "continuation_tests", "fitting_tests")],
+                        help="the gtest binaries (default build/tests/{shellindent,"
+                             "continuation,fitting}_tests)")
     parser.add_argument("--out", default=None,
                         help="output directory (default build/verification)")
     parser.add_argument("--doc", default=os.path.join(SOURCE_DIR, "docs", "verification.md"),
@@ -407,8 +424,9 @@ def main():
     if args.records:
         records_path, binary_ok = args.records, True
     else:
-        if not os.access(args.tests, os.X_OK):
-            print(f"no test binary at {args.tests} (build first, or pass --tests)")
+        missing = [t for t in args.tests if not os.access(t, os.X_OK)]
+        if missing:
+            print(f"no test binary at {', '.join(missing)} (build first, or pass --tests)")
             return 2
         records_path = os.path.join(out_dir, "records.jsonl")
         binary_ok = run_tests(args.tests, QUICK_FILTER if args.quick else FULL_FILTER,
@@ -424,7 +442,8 @@ def main():
         figures.append(os.path.join(os.path.dirname(os.path.abspath(args.doc)), "figures",
                                     "verification.png"))
         os.makedirs(os.path.dirname(figures[-1]), exist_ok=True)
-    return report(read_records(records_path), binary_ok, out_dir, args.doc, doc_out, figures,
+    records = in_document_order(read_records(records_path), args.doc)
+    return report(records, binary_ok, out_dir, args.doc, doc_out, figures,
                   "quick" if args.quick else "full")
 
 

@@ -2,10 +2,12 @@
 
 #include <cmath>
 
+#include "analysis/path_columns.hpp"
+
 namespace si {
 namespace {
 
-const char* kCurvatureNames[] = {"k11_per_mm", "k12_per_mm", "k22_per_mm"};
+const PathColumn kCurvatures[] = {PathColumn::kK11, PathColumn::kK12, PathColumn::kK22};
 
 }  // namespace
 
@@ -41,11 +43,10 @@ std::vector<cont::Event> critical_force_events(const std::vector<PathPoint>& poi
     cont::Event e;
     e.type = cont::EventType::kInflection;
     e.name = cont::event_type_name(e.type);
-    e.monitor = "force_N";
-    e.against = kCurvatureNames[curvature];
+    e.monitor = column_name(PathColumn::kForce);
+    e.against = column_name(kCurvatures[curvature]);
     e.p = 0.5 * (a.depth + b.depth);
-    e.monitors =
-        0.5 * (IndentationProblem::monitor_vector(a) + IndentationProblem::monitor_vector(b));
+    e.monitors = 0.5 * (monitor_values(a) + monitor_values(b));
     e.step = i2;
     e.located = false;
     e.accuracy = std::abs(b.depth - a.depth);

@@ -6,23 +6,26 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
-#include "analysis/active_set_solver.hpp"
 #include "analysis/critical_force.hpp"
-#include "analysis/linear_indentation.hpp"
 #include "analysis/local_contact.hpp"
+#include "analysis/path_columns.hpp"
 #include "contact/indenter_factory.hpp"
 #include "continuation/checkpoint.hpp"
 #include "continuation/kinsol_corrector.hpp"
 #include "continuation/natural.hpp"
 #include "continuation/pseudo_arclength.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
+#include "indentation/active_set_solver.hpp"
+#include "indentation/linear_indentation.hpp"
 #include "section/vam_section.hpp"
 
 namespace si {
 namespace {
 
-IndentationOptions options_of(const CaseFile& c, int threads, const std::string& linear_solver) {
+IndentationOptions options_of(const IndentationCase& c, int threads,
+                              JacobianSolverKind linear_solver) {
   IndentationOptions o;
   o.linear_solver = linear_solver;
   o.contact_offset = contact_face_offset(c);
@@ -37,6 +40,7 @@ IndentationOptions options_of(const CaseFile& c, int threads, const std::string&
   o.interpolated.fbar = c.contact.fbar;
   if (c.contact.fbar) o.interpolated.fbar_top = analyze_vam(c.laminate).Fbar_top;
   o.local = local_contact_law(c);
+  o.monitors = path_monitors();
   return o;
 }
 
@@ -67,7 +71,7 @@ class PathRecorder {
   const PathCallback& callback_;
 };
 
-void finish(PathResult& r, bool completed, const std::string& status, const std::string& reason) {
+void finish(PathResult& r, bool completed, RunStatus status, const std::string& reason) {
   r.completed = completed;
   r.status = status;
   r.reason = reason;
@@ -78,8 +82,8 @@ void finish(PathResult& r, bool completed, const std::string& status, const std:
 using DepthSolve = std::function<std::string(double h, cont::Vector& z, int& iterations)>;
 
 // The depth grid, one solve per depth, from the undeformed start.
-PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback,
-                          const std::string& method, const DepthSolve& solve) {
+PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback, RunMethod method,
+                          const DepthSolve& solve) {
   PathResult r;
   r.method = method;
   r.monitor_names = s.problem->monitor_names();
@@ -87,32 +91,32 @@ PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback,
   cont::Vector z = s.problem->initial_point();
   r.final_unknowns = z;
   if (!rec.add(*s.problem, z, 0.0, 0, 0.0)) {
-    finish(r, false, "stopped", "stopped by the user");
+    finish(r, false, RunStatus::kStopped, "stopped by the user");
     return r;
   }
   double previous = 0;
-  for (double h : depth_grid(s.case_file.path)) {
+  for (double h : depth_grid(s.spec.path)) {
     int iterations = 0;
     const std::string failure = solve(h, z, iterations);
     if (!failure.empty()) {
-      finish(r, false, "failed", "depth " + std::to_string(h) + " mm: " + failure);
+      finish(r, false, RunStatus::kFailed, "depth " + std::to_string(h) + " mm: " + failure);
       return r;
     }
     r.final_unknowns = z;
     if (!rec.add(*s.problem, z, h, iterations, h - previous)) {
-      finish(r, false, "stopped", "stopped by the user");
+      finish(r, false, RunStatus::kStopped, "stopped by the user");
       return r;
     }
     previous = h;
   }
-  finish(r, true, "completed", "");
+  finish(r, true, RunStatus::kCompleted, "");
   return r;
 }
 
 // Linear kinematics: each depth of the grid independently, by the fast path.
 PathResult run_linear(IndentationSetup& s, const PathCallback& callback) {
   LinearIndentation fast(*s.problem);
-  return run_depth_grid(s, callback, "linear fast path",
+  return run_depth_grid(s, callback, RunMethod::kLinearFastPath,
                         [&](double h, cont::Vector& z, int& iterations) -> std::string {
                           try {
                             z = fast.solve(h);
@@ -129,21 +133,32 @@ PathResult run_linear(IndentationSetup& s, const PathCallback& callback) {
 // solved again while the candidate set grows (as the continuation library does).
 PathResult run_active_set(IndentationSetup& s, const PathCallback& callback) {
   IndentationProblem& p = *s.problem;
-  return run_depth_grid(
-      s, callback, "active_set", [&](double h, cont::Vector& z, int& iterations) -> std::string {
-        // Tolerance: 1e-10 of the force a gap of h would carry, as for
-        // KINSOL (the force at the start, zero, is no scale).
-        const double tol = 1e-10 * std::max(p.force_scale(z), p.stiffness_scale() * h);
-        ActiveSetResult a = solve_active_set(p, z, h, tol);
-        iterations = a.iterations;
-        for (int round = 0; a.converged && round < 10 && p.adapt(z, h); ++round)
-          a = solve_active_set(p, z, h, tol);
-        return a.converged ? "" : a.reason;
-      });
+  return run_depth_grid(s, callback, RunMethod::kActiveSet,
+                        [&](double h, cont::Vector& z, int& iterations) -> std::string {
+                          // Tolerance: 1e-10 of the force a gap of h would carry, as for
+                          // KINSOL (the force at the start, zero, is no scale).
+                          const double tol =
+                              1e-10 * std::max(p.force_scale(z), p.stiffness_scale() * h);
+                          ActiveSetResult a = solve_active_set(p, z, h, tol);
+                          iterations = a.iterations;
+                          for (int round = 0; a.converged && round < 10 && p.adapt(z, h); ++round)
+                            a = solve_active_set(p, z, h, tol);
+                          return a.converged ? "" : a.reason;
+                        });
+}
+
+// The run's status for the continuation's, in cont::Status's order (continuation/branch.hpp).
+RunStatus run_status(cont::Status s) {
+  static_assert(static_cast<int>(cont::Status::kStartFailed) == 6, "cont::Status changed");
+  constexpr RunStatus kByStatus[] = {RunStatus::kFailed,  // kRunning: never returned
+                                     RunStatus::kCompleted, RunStatus::kReachedBound,
+                                     RunStatus::kMaxSteps,  RunStatus::kStepTooSmall,
+                                     RunStatus::kStopped,   RunStatus::kStartFailed};
+  return kByStatus[static_cast<int>(s)];
 }
 
 cont::Settings continuation_settings(const IndentationSetup& s) {
-  const PathSpec& path = s.case_file.path;
+  const PathSpec& path = s.spec.path;
   cont::Settings c;
   c.method =
       path.method == PathMethod::kNatural ? cont::Method::kNatural : cont::Method::kPseudoArclength;
@@ -161,7 +176,7 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   // its default, 1000 max(1, |z0|), cuts the Newton steps of a stiff shell short (measured: 2 %
   // residual decrease per iteration on the paper's cap). Allow any step the line search accepts.
   c.newton.max_step = 1e12;
-  c.extremum_monitors = {"force_N"};
+  c.extremum_monitors = {column_name(PathColumn::kForce)};
   // Inflections of T_N against k11, k22 (the critical force) come from the points afterwards
   // (critical_force.hpp): located ones would sit on every contact-set change.
   c.detect_signature_changes = true;
@@ -236,9 +251,13 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
                             const PathControl& control) {
   PathResult r;
   cont::Settings settings = continuation_settings(s);
-  r.method = cont::method_name(settings.method);
+  r.method =
+      settings.method == cont::Method::kNatural ? RunMethod::kNatural : RunMethod::kPseudoArclength;
   r.monitor_names = s.problem->monitor_names();
   settings.checkpoint_path = control.checkpoint;
+  settings.checkpoint_writer = [](const std::string& path, const std::string& text) {
+    write_file_atomically(path, text);
+  };
   settings.checkpoint_interval = control.checkpoint.empty() ? 0 : control.checkpoint_interval;
   settings.checkpoint_keeps_x = false;  // the points live in the attachment
   settings.checkpoint_attachment = [&] { return path_attachment(*s.problem, r, control); };
@@ -261,13 +280,13 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   r.events = b.events;
   if (!b.points.empty() && b.points.back().x.size() > 0) r.final_unknowns = b.points.back().x;
   const bool ok = b.status == cont::Status::kCompleted || b.status == cont::Status::kReachedBound;
-  finish(r, ok, cont::status_name(b.status), end_reason(b, s.case_file.path));
+  finish(r, ok, run_status(b.status), end_reason(b, s.spec.path));
   return r;
 }
 
 }  // namespace
 
-IndenterPose default_indenter_pose(const CaseFile& c, const ShellModel& model) {
+IndenterPose default_indenter_pose(const IndentationCase& c, const ShellModel& model) {
   IndenterPose pose;
   pose.direction = c.indenter.direction;
   pose.axis = c.indenter.axis;
@@ -282,17 +301,17 @@ IndenterPose default_indenter_pose(const CaseFile& c, const ShellModel& model) {
   return pose;
 }
 
-IndentationSetup::IndentationSetup(CaseFile c, int threads, const std::string& linear_solver)
-    : case_file(std::move(c)), model(build_shell_model(case_file)) {
-  pose = default_indenter_pose(case_file, model);
+IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolverKind linear_solver)
+    : spec(std::move(c)), model(build_shell_model(spec)) {
+  pose = default_indenter_pose(spec, model);
   try {
-    indenter = make_indenter(case_file.indenter, pose);
+    indenter = make_indenter(spec.indenter, pose);
   } catch (const Error& e) {
-    throw e.within(Where{case_file.file, "indenter", "", 0});
+    throw e.within(Where{spec.file, "indenter", "", 0});
   }
   try {
     problem = std::make_unique<IndentationProblem>(model, *indenter, pose.direction,
-                                                   options_of(case_file, threads, linear_solver));
+                                                   options_of(spec, threads, linear_solver));
   } catch (const Error& e) {
     const auto text = [](const Vector3d& v) {
       char buf[96];
@@ -300,67 +319,14 @@ IndentationSetup::IndentationSetup(CaseFile c, int threads, const std::string& l
       return std::string(buf);
     };
     if (e.where().key == "indenter.direction")  // the direction itself is wrong, not the pose
-      throw Error(e.kind(), e.reason(), Where{case_file.file, e.where().key, e.where().value, 0});
+      throw Error(e.kind(), e.reason(), Where{spec.file, e.where().key, e.where().value, 0});
     if (e.where().key == "element")  // a degenerate element (shell/quad4_shell.cpp)
-      throw Error(e.kind(), e.reason(),
-                  Where{case_file.file, "mesh.element", model.element->name(), 0});
-    const std::string where = case_file.indenter.position ? "indenter.position" : "indenter";
+      throw Error(e.kind(), e.reason(), Where{spec.file, "mesh.element", model.element->name(), 0});
+    const std::string where = spec.indenter.position ? "indenter.position" : "indenter";
     const std::string value = text(pose.position) + " mm, direction " + text(pose.direction);
     // The problem names `indenter`; the case's pose is what the user can change.
-    throw Error(e.kind(), e.reason(), Where{case_file.file, where, value, 0});
+    throw Error(e.kind(), e.reason(), Where{spec.file, where, value, 0});
   }
-}
-
-std::vector<double> path_point_values(const PathPoint& p) {
-  const IndentationState& s = p.state;
-  return {s.depth,
-          s.force,
-          s.reaction,
-          s.apex_deflection,
-          s.contact_radius,
-          s.contact_area,
-          static_cast<double>(s.contact_nodes),
-          s.apex_curvature[0],
-          s.apex_curvature[1],
-          s.apex_curvature[2],
-          s.energy,
-          p.work,
-          s.min_gap,
-          s.min_multiplier,
-          s.max_complementarity,
-          static_cast<double>(p.iterations),
-          p.step,
-          s.local_indentation,
-          s.local_energy,
-          s.contact_curvature_min[0],
-          s.contact_curvature_max[0],
-          s.contact_curvature_min[1],
-          s.contact_curvature_max[1],
-          s.contact_curvature_min[2],
-          s.contact_curvature_max[2]};
-}
-
-PathPoint path_point_from_values(const std::vector<double>& v) {
-  SI_REQUIRE(v.size() == 25, "a path point has 25 values");
-  PathPoint p;
-  IndentationState& s = p.state;
-  s.depth = v[0], s.force = v[1], s.reaction = v[2], s.apex_deflection = v[3];
-  s.contact_radius = v[4], s.contact_area = v[5], s.contact_nodes = static_cast<int>(v[6]);
-  s.apex_curvature = Vector3d(v[7], v[8], v[9]);
-  s.energy = v[10], p.work = v[11], s.min_gap = v[12], s.min_multiplier = v[13];
-  s.max_complementarity = v[14], p.iterations = static_cast<int>(v[15]), p.step = v[16];
-  s.local_indentation = v[17], s.local_energy = v[18];
-  s.contact_curvature_min = Vector3d(v[19], v[21], v[23]);
-  s.contact_curvature_max = Vector3d(v[20], v[22], v[24]);
-  return p;
-}
-
-std::vector<double> depth_grid(const PathSpec& path) {
-  if (!path.depths.empty()) return path.depths;
-  std::vector<double> grid;
-  const int n = static_cast<int>(std::ceil(path.depth_max / path.step - 1e-9));
-  for (int i = 1; i <= n; ++i) grid.push_back(std::min(path.depth_max, i * path.step));
-  return grid;
 }
 
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback,
@@ -369,7 +335,7 @@ PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& cal
   const bool fast =
       setup.model.kinematics == Kinematics::kLinear && setup.problem->num_local_unknowns() == 0;
   PathResult r = fast ? run_linear(setup, callback)
-                 : setup.case_file.contact.solver == ContactSolver::kActiveSet
+                 : setup.spec.contact.solver == ContactSolver::kActiveSet
                      ? run_active_set(setup, callback)
                      : run_continuation(setup, callback, control);
   for (int k : {0, 2}) {

@@ -1,4 +1,4 @@
-// A depth path of a case file, end to end: the model, the indenter at its pose, the contact
+// A depth path of an indentation case, end to end: the model, the indenter at its pose, the contact
 // problem, and the path method (docs/case-file.md `path`, `contact`):
 //  * linear kinematics: the linear fast path (linear_indentation.hpp) at each depth of the grid
 //    - exact for the linear problem, which has no limit points, so `path.method` is not needed;
@@ -19,31 +19,30 @@
 #include <string>
 #include <vector>
 
-#include "analysis/indentation_problem.hpp"
-#include "analysis/shell_model.hpp"
+#include "analysis/indentation_case.hpp"
 #include "continuation/branch.hpp"
-#include "io/case_file.hpp"
+#include "indentation/indentation_problem.hpp"
+#include "model/shell_model.hpp"
 
 namespace si {
 
 // Model, indenter and contact problem of a case, kept together (the problem refers to both).
 struct IndentationSetup {
-  CaseFile case_file;
+  IndentationCase spec;
   ShellModel model;
   IndenterPose pose;
   std::unique_ptr<Indenter> indenter;
   std::unique_ptr<IndentationProblem> problem;
 
   // Throws an input error naming the case file and key for a case that cannot run.
-  // linear_solver: the contact Jacobian's solver, "cholesky_gmres" (indentation_problem.hpp) or a
-  // sparse LU, "umfpack" or "klu" (docs/performance.md).
-  IndentationSetup(CaseFile c, int threads,
-                   const std::string& linear_solver = kPreconditionedKrylov);
+  // linear_solver: the contact Jacobian's solver (indentation_problem.hpp, docs/performance.md).
+  IndentationSetup(IndentationCase c, int threads,
+                   JacobianSolverKind linear_solver = JacobianSolverKind::kPreconditionedKrylov);
 };
 
 // The indenter's pose: the case's indenter.position/direction/axis; without a position, the
 // reference point starts on the apex's line of travel, clear of the shell.
-IndenterPose default_indenter_pose(const CaseFile& c, const ShellModel& model);
+IndenterPose default_indenter_pose(const IndentationCase& c, const ShellModel& model);
 
 struct PathPoint {
   int index = 0;  // position on the path (0 = the start point)
@@ -56,28 +55,37 @@ struct PathPoint {
   Eigen::VectorXd depth_slopes;
 };
 
-// A point's scalar results in the order of path.csv's columns (io/path_results.hpp, docs/
-// results.md): depth, force, reaction, apex deflection, contact radius, area, nodes, k11, k12,
-// k22, energy, work, min gap, min multiplier, max complementarity, iterations, step, local
-// indentation, local energy. The inverse
-// restores those fields (checkpoints); the per-node vectors of the state stay empty.
-std::vector<double> path_point_values(const PathPoint& p);
-PathPoint path_point_from_values(const std::vector<double>& v);
+// How a path was computed (see the header): the linear fast path, the active-set grid, or a
+// continuation method.
+enum class RunMethod { kLinearFastPath, kActiveSet, kNatural, kPseudoArclength };
+
+// How a run ended. kCompleted and kReachedBound reached the end of the path; kStopped: the
+// callback asked (Ctrl-C); kFailed: a depth of a grid could not be solved; the others are the
+// continuation's (continuation/branch.hpp Status).
+enum class RunStatus {
+  kCompleted,
+  kReachedBound,
+  kMaxSteps,
+  kStepTooSmall,
+  kStopped,
+  kStartFailed,
+  kFailed
+};
 
 struct PathResult {
-  std::string method;  // "linear fast path", "natural", "pseudo_arclength", "active_set"
+  RunMethod method = RunMethod::kPseudoArclength;
   std::vector<PathPoint> points;
   std::vector<cont::Event> events;
   std::vector<std::string> monitor_names;
   bool completed = false;  // reached the end of the path
-  std::string status;      // e.g. "completed", "reached_bound", "step_too_small", "stopped"
-  std::string reason;      // why it stopped early; empty when completed
+  RunStatus status = RunStatus::kFailed;
+  std::string reason;  // why it stopped early; empty when completed
   // The problem's unknowns at the last point (to write its fields); empty if there is none.
   cont::Vector final_unknowns;
 };
 
 // Called after each accepted point with the point and the problem's unknowns; returning false
-// stops the run (status "stopped", every converged point kept).
+// stops the run (RunStatus::kStopped, every converged point kept).
 using PathCallback = std::function<bool(const PathPoint&, const cont::Vector& z)>;
 
 // Checkpoints and resume (continuation methods only; the linear fast path and the active-set
@@ -98,9 +106,6 @@ struct PathControl {
   std::function<nlohmann::json()> save_record;
   std::function<void(const nlohmann::json&)> restore_record;
 };
-
-// The depth grid of a path section.
-std::vector<double> depth_grid(const PathSpec& path);
 
 // Runs the path. Numerical failures do not throw: they end the path with the reason.
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback = {},

@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "analysis/chart_assembly.hpp"
 #include "continuation/problem.hpp"
 #include "model/assembler.hpp"
+#include "model/chart_assembly.hpp"
 #include "model/dof_map.hpp"
-#include "model/linear_solver.hpp"
 #include "model/loads.hpp"
 #include "model/shell_chart.hpp"
 #include "model/supports.hpp"
+#include "solvers/linear_solver.hpp"
 
 namespace si {
 
@@ -32,9 +32,10 @@ struct DisplacementMonitor {
 };
 
 struct LoadProblemOptions {
-  std::vector<DisplacementMonitor> displacements;  // monitors after "load_factor"
-  std::string linear_solver = "umfpack";           // "umfpack" | "klu": K T + D is unsymmetric
-  int threads = 0;                                 // element assembly (0 = OpenMP default)
+  std::vector<DisplacementMonitor> displacements;               // monitors after "load_factor"
+  LinearSolverKind linear_solver = LinearSolverKind::kUmfpack;  // umfpack | klu: K T + D is
+                                                                // unsymmetric
+  int threads = 0;  // element assembly (0 = OpenMP default)
 };
 
 class LoadProblem : public cont::Problem {

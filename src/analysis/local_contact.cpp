@@ -7,25 +7,11 @@
 
 namespace si {
 
-const char* local_contact_name(LocalContactModel m) {
-  switch (m) {
-    case LocalContactModel::kHertz:
-      return "hertz";
-    case LocalContactModel::kYangSun:
-      return "yang_sun";
-    case LocalContactModel::kVam:
-      return "vam";
-    case LocalContactModel::kNone:
-      break;
-  }
-  return "none";
-}
-
 namespace {
 
 // Young's modulus and Poisson ratio of an elastic indenter (its 1-direction constants; an
 // indenter material is isotropic in practice); E = 0 for a rigid one.
-void indenter_constants(const CaseFile& c, double& E, double& nu) {
+void indenter_constants(const IndentationCase& c, double& E, double& nu) {
   E = 0, nu = 0;
   if (!c.indenter.material) return;
   E = c.indenter.material->constants().E1;
@@ -34,18 +20,19 @@ void indenter_constants(const CaseFile& c, double& E, double& nu) {
 
 }  // namespace
 
-LocalContactLaw local_contact_law(const CaseFile& c) {
+LocalContactLaw local_contact_law(const IndentationCase& c) {
   const LocalContactModel m = c.contact.local;
   if (m == LocalContactModel::kNone) return {};
-  const Where where{c.file, "contact.local", local_contact_name(m), 0};
   if (m == LocalContactModel::kVam) {
     const double compliance = analyze_vam(c.laminate).c_L(0, 0);
     if (!(compliance > 0))
-      throw_input("the section's face compliance c_L++ is not positive", where);
+      throw_input("the section's face compliance c_L++ (local law vam) is not positive",
+                  Where{c.file, "contact.local", "", 0});
     return {LocalLawKind::kThinLayer, 0.0, compliance, 0.0};
   }
-  if (c.indenter.shape != IndenterShape::kSphere)
-    throw_input("a Hertz-type local law needs a spherical indenter", where);
+  // The case-file reader refuses other shapes, naming the key (io/case_file.cpp).
+  SI_REQUIRE(c.indenter.shape == IndenterShape::kSphere,
+             "a Hertz-type local law needs a spherical indenter");
   const EngineeringConstants& top = c.laminate.plies.back().material.constants();
   double Ei = 0, nui = 0;
   indenter_constants(c, Ei, nui);

@@ -11,17 +11,15 @@
 // Hertz's dent profile (hertz_dent.hpp) with the radius of their own Hertz form: the relative
 // radius R for hertz (the sphere on the cap's curvature, so the dented face conforms to the
 // sphere inside the patch), R_i for yang_sun (a law for flat laminates: on a cap the patch keeps
-// the cap's own curvature). Both need a sphere, whose profile alone is defined (other shapes:
-// input error naming contact.local).
+// the cap's own curvature). Both need a sphere, whose profile alone is defined (the case-file
+// reader refuses other shapes).
 #pragma once
 
+#include "analysis/indentation_case.hpp"
 #include "contact/local_contact_law.hpp"
-#include "io/case_file.hpp"
 
 namespace si {
 
-LocalContactLaw local_contact_law(const CaseFile& c);
-// The case-file spelling of a choice: "none", "hertz", "yang_sun", "vam".
-const char* local_contact_name(LocalContactModel m);
+LocalContactLaw local_contact_law(const IndentationCase& c);
 
 }  // namespace si

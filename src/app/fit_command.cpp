@@ -10,15 +10,15 @@
 #include <optional>
 #include <stdexcept>
 
+#include "core/atomic_file.hpp"
 #include "core/decimal_number.hpp"
+#include "core/did_you_mean.hpp"
 #include "core/error.hpp"
 #include "core/value_excerpt.hpp"
 #include "fitting/builtin_models.hpp"
 #include "fitting/linear_fit.hpp"
 #include "fitting/polynomial_degree.hpp"
-#include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
-#include "io/did_you_mean.hpp"
 
 namespace si {
 namespace {

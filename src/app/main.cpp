@@ -14,8 +14,8 @@
 #include "app/static_command.hpp"
 #include "app/sweep_command.hpp"
 #include "core/blas_threads.hpp"
+#include "core/did_you_mean.hpp"
 #include "core/error.hpp"
-#include "io/did_you_mean.hpp"
 
 namespace {
 

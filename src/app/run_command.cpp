@@ -10,18 +10,19 @@
 #include <sstream>
 
 #include "analysis/indentation_run.hpp"
-#include "analysis/local_contact.hpp"
-#include "analysis/result_fields.hpp"
 #include "app/interrupt_signals.hpp"
 #include "app/thread_count.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
-#include "io/atomic_file.hpp"
 #include "io/case_digest.hpp"
+#include "io/case_file.hpp"
 #include "io/case_key_location.hpp"
 #include "io/output_directory.hpp"
 #include "io/output_lock.hpp"
 #include "io/path_results.hpp"
+#include "io/result_fields.hpp"
+#include "io/spellings.hpp"
 #include "io/vtu_writer.hpp"
 
 namespace si {
@@ -163,9 +164,9 @@ std::vector<std::string> write_path_files(const std::filesystem::path& dir,
                                           const OutputChoice& formats,
                                           const IndentationSetup& setup, const PathResult& r,
                                           const std::vector<std::pair<double, std::string>>& vtus) {
-  const PathSpec& path = setup.case_file.path;
+  const PathSpec& path = setup.spec.path;
   std::vector<std::string> written;
-  const bool arclength = r.method == "pseudo_arclength";
+  const bool arclength = r.method == RunMethod::kPseudoArclength;
   if (formats.csv) {
     write_file_atomically((dir / "path.csv").string(), path_csv(r));
     written.push_back((dir / "path.csv").string());
@@ -207,16 +208,15 @@ std::string default_case_yaml() {
 int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream& err) {
   check_thread_count(o.threads);
   const std::string text = o.case_file.empty() ? default_case_yaml() : case_text(o.case_file);
-  CaseFile c = o.case_file.empty() ? parse_case_file(text, "built-in default case")
-                                   : read_case_file(o.case_file);
+  const CaseFile cf = o.case_file.empty() ? parse_case_file(text, "built-in default case")
+                                          : read_case_file(o.case_file);
   std::optional<IndentationSetup> built;
   try {
-    built.emplace(std::move(c), o.threads);
+    built.emplace(cf, o.threads);
   } catch (const Error& e) {
     throw located_in_case(e, text);
   }
   IndentationSetup& setup = *built;
-  const CaseFile& cf = setup.case_file;
   for (const auto& w : setup.model.warnings) err << "shellindent: warning: " << w << "\n";
   const std::filesystem::path dir = o.out_dir.empty() ? cf.output.dir : o.out_dir;
   const Where dir_where =
@@ -282,9 +282,10 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   }
 
   const bool local = setup.problem->local_law().kind != LocalLawKind::kNone;
-  out << "Indentation of " << cf.file << " (" << r.method
+  out << "Indentation of " << cf.file << " (" << run_method_name(r.method)
       << "; whole-shell values, depth = indenter travel after first touch"
-      << (local ? std::string(", local law ") + local_contact_name(cf.contact.local) : "") << ")\n"
+      << (local ? ", local law " + spelling(local_contact_spellings(), cf.contact.local) : "")
+      << ")\n"
       << table_header(local) << "\n";
   for (const PathPoint& p : r.points) out << table_row(p, local) << "\n";
   for (const cont::Event& e : r.events)
@@ -297,11 +298,13 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   for (std::size_t i = 0; i < written.size(); ++i) err << (i ? ", " : "") << written[i];
   err << (written.empty() ? "nothing (output.formats)" : "") << "\n";
   if (r.completed) return 0;
+  // The status says the callback stopped the run; the signal that asked it to, what the user did.
+  const bool interrupt = r.status == RunStatus::kStopped && interrupted();
   err << "shellindent: error: the run stopped after " << r.points.size() << " converged point(s)"
       << (r.points.empty()
               ? ""
               : " at depth " + format_quantity(r.points.back().state.depth, Dimension::kLength))
-      << ": " << (interrupted() ? std::string("interrupted (") + interrupt_name() + ")" : r.reason)
+      << ": " << (interrupt ? std::string("interrupted (") + interrupt_name() + ")" : r.reason)
       << "\n";
   return 1;
 }

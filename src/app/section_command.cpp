@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
-#include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
 #include "io/laminate_reader.hpp"
 #include "io/section_report.hpp"

@@ -9,17 +9,17 @@
 #include <sstream>
 #include <vector>
 
-#include "analysis/result_fields.hpp"
-#include "analysis/shell_model.hpp"
+#include "analysis/static_solver.hpp"
 #include "app/thread_count.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
 #include "io/case_key_location.hpp"
 #include "io/output_directory.hpp"
 #include "io/output_lock.hpp"
+#include "io/result_fields.hpp"
 #include "io/vtu_writer.hpp"
-#include "model/static_solver.hpp"
+#include "model/shell_model.hpp"
 
 namespace si {
 namespace {

@@ -2,7 +2,7 @@
 // contact, from a case file with a `load` section (docs/case-file.md). Prints one progress line
 // per converged step to `err` and a table to `out`; after the run writes DIR/static.csv,
 // DIR/static.json and DIR/static.vtu (the last converged step, with the nodal strains and the
-// resultants N, M, Q averaged over elements: analysis/nodal_resultants.hpp). Each file is written
+// resultants N, M, Q averaged over elements: model/nodal_resultants.hpp). Each file is written
 // atomically, and only once the run has ended; a run that fails mid-way writes its converged steps,
 // says where and why it stopped, and returns 1.
 #pragma once

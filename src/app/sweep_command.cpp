@@ -19,14 +19,16 @@
 #include <optional>
 #include <sstream>
 
+#include "analysis/path_columns.hpp"
 #include "app/thread_count.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "fitting/builtin_models.hpp"
 #include "fitting/curve_model.hpp"
-#include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
 #include "io/output_directory.hpp"
 #include "io/output_lock.hpp"
+#include "io/path_results.hpp"
 #include "io/study_file.hpp"
 
 extern char** environ;
@@ -57,7 +59,16 @@ std::optional<json> read_json(const fs::path& p) {
 }
 
 bool finished(const std::string& status) {
-  return status == "completed" || status == "reached_bound";
+  return status == run_status_name(RunStatus::kCompleted) ||
+         status == run_status_name(RunStatus::kReachedBound);
+}
+
+// The path columns the summary reads (analysis/path_columns.hpp).
+const char* depth_column() {
+  return column_name(PathColumn::kDepth);
+}
+const char* force_column() {
+  return column_name(PathColumn::kForce);
 }
 
 // A case is done when its directory holds the same case text and a finished path.json.
@@ -157,10 +168,10 @@ class Scheduler {
 // Linear interpolation of column `y` at depth `d` on the first passage; NaN if not reached.
 double value_at_depth(const json& points, const char* y, double d) {
   for (size_t i = 0; i < points.size(); ++i) {
-    const double d0 = points[i]["depth_mm"];
+    const double d0 = points[i][depth_column()];
     if (std::abs(d0 - d) <= 1e-9 * (1 + d)) return points[i][y];
     if (i + 1 < points.size()) {
-      const double d1 = points[i + 1]["depth_mm"];
+      const double d1 = points[i + 1][depth_column()];
       if ((d - d0) * (d - d1) < 0) {
         const double t = (d - d0) / (d1 - d0);
         return (1 - t) * points[i][y].get<double>() + t * points[i + 1][y].get<double>();
@@ -170,12 +181,13 @@ double value_at_depth(const json& points, const char* y, double d) {
   return kNaN;
 }
 
-// The first inflection of T_N against `against` ("k11_per_mm"): {depth, force} or NaNs.
-std::pair<double, double> first_inflection(const json& events, const std::string& against) {
+// The first inflection of T_N against the column `against` (k11): {depth, force} or NaNs.
+std::pair<double, double> first_inflection(const json& events, PathColumn against) {
+  const std::string inflection = cont::event_type_name(cont::EventType::kInflection);
   for (const json& e : events)
-    if (e.value("type", "") == "inflection" && e.value("monitor", "") == "force_N" &&
-        e.value("against", "") == against)
-      return {e.value("depth_mm", kNaN), e.value("force_N", kNaN)};
+    if (e.value("type", "") == inflection && e.value("monitor", "") == force_column() &&
+        e.value("against", "") == column_name(against))
+      return {e.value(depth_column(), kNaN), e.value(force_column(), kNaN)};
   return {kNaN, kNaN};
 }
 
@@ -187,10 +199,10 @@ json grid_points(const fs::path& dir) {
   const fs::path file = dir / "path_grid.csv";
   if (!fs::exists(file)) return points;
   const CsvTable grid = read_csv_table(file.string());
-  const std::vector<double> depth = grid.numeric_column("depth_mm");
-  const std::vector<double> force = grid.numeric_column("force_N");
+  const std::vector<double> depth = grid.numeric_column(depth_column());
+  const std::vector<double> force = grid.numeric_column(force_column());
   for (std::size_t i = 0; i < depth.size(); ++i)
-    points.push_back({{"depth_mm", depth[i]}, {"force_N", force[i]}});
+    points.push_back({{depth_column(), depth[i]}, {force_column(), force[i]}});
   return points;
 }
 
@@ -201,12 +213,12 @@ json grid_points(const fs::path& dir) {
 // the fit towards those depths; on the [0/0]2S cap C2 moved from 1.61 (grid) to 1.79 (points).
 void fit_contact_law(const json& points, const StudyFit& f, double dh, json& row) {
   std::vector<double> h, t;
-  const double end = points.back()["depth_mm"];
+  const double end = points.back()[depth_column()];
   for (long k = 1;; ++k) {
     const double d = static_cast<double>(k) * dh;
     if (d > f.depth_max * (1 + 1e-12) || d > end * (1 + 1e-12)) break;
     if (d <= f.depth_min) continue;
-    const double force = value_at_depth(points, "force_N", d);
+    const double force = value_at_depth(points, force_column(), d);
     if (!std::isfinite(force)) continue;
     h.push_back(d);
     t.push_back(force);
@@ -244,19 +256,22 @@ json summarize(const StudyCase& c, const fs::path& dir, const StudyFile& study) 
   row["reason"] = path->value("reason", "");
   row["points"] = pts.size();
   if (pts.empty()) return row;
-  row["depth_end_mm"] = pts.back()["depth_mm"];
-  row["force_at_depth_max_N"] = value_at_depth(pts, "force_N", c.case_file.path.depth_max);
+  const char* depth = depth_column();
+  const char* force = force_column();
+  row["depth_end_mm"] = pts.back()[depth];
+  row["force_at_depth_max_N"] = value_at_depth(pts, force, c.case_file.path.depth_max);
   size_t imax = 0;
   for (size_t i = 0; i < pts.size(); ++i)
-    if (pts[i]["force_N"].get<double>() > pts[imax]["force_N"].get<double>()) imax = i;
-  row["max_force_N"] = pts[imax]["force_N"];
-  row["depth_at_max_force_mm"] = pts[imax]["depth_mm"];
-  row["energy_end_Nmm"] = pts.back()["energy_Nmm"];
+    if (pts[i][force].get<double>() > pts[imax][force].get<double>()) imax = i;
+  row["max_force_N"] = pts[imax][force];
+  row["depth_at_max_force_mm"] = pts[imax][depth];
+  row["energy_end_Nmm"] = pts.back()[column_name(PathColumn::kEnergy)];
   const json events = (*path)["events"];
-  for (const char* k : {"k11", "k22"}) {
-    const auto [depth, force] = first_inflection(events, std::string(k) + "_per_mm");
-    row[std::string("critical_") + k + "_depth_mm"] = depth;
-    row[std::string("critical_") + k + "_force_N"] = force;
+  for (const auto& [k, column] :
+       {std::pair{"k11", PathColumn::kK11}, std::pair{"k22", PathColumn::kK22}}) {
+    const auto [at_depth, at_force] = first_inflection(events, column);
+    row[std::string("critical_") + k + "_depth_mm"] = at_depth;
+    row[std::string("critical_") + k + "_force_N"] = at_force;
   }
   if (study.has_fit) {
     const json grid = grid_points(dir);

@@ -1,10 +1,10 @@
-// Builds the indenter a case file asks for (src/io/case_file.hpp IndenterSpec) at a pose.
+// Builds the indenter a spec asks for (indenter_spec.hpp) at a pose.
 #pragma once
 
 #include <memory>
 
 #include "contact/indenter.hpp"
-#include "io/case_file.hpp"
+#include "contact/indenter_spec.hpp"
 
 namespace si {
 

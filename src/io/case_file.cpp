@@ -13,6 +13,7 @@
 #include "io/material_reader.hpp"
 #include "io/named_sets_reader.hpp"
 #include "io/plausible_range.hpp"
+#include "io/spellings.hpp"
 #include "io/yaml_reader.hpp"
 
 namespace si {
@@ -31,8 +32,6 @@ const Choices<ElementType> kElements{{"mitc4", ElementType::kMitc4},
                                      {"bernstein4", ElementType::kBernstein4}};
 const Choices<Symmetry> kSymmetries{{"full", Symmetry::kFull}, {"quarter", Symmetry::kQuarter}};
 const Choices<bool> kGradings{{"uniform", false}, {"graded", true}};
-const Choices<Kinematics> kKinematics{{"linear", Kinematics::kLinear},
-                                      {"nonlinear", Kinematics::kNonlinear}};
 const Choices<IndenterShape> kShapes{{"sphere", IndenterShape::kSphere},
                                      {"superquadric", IndenterShape::kSuperquadric},
                                      {"flat_punch", IndenterShape::kFlatPunch},
@@ -41,10 +40,6 @@ const Choices<ContactSurface> kSurfaces{{"outer", ContactSurface::kOuter},
                                         {"mid", ContactSurface::kMid}};
 const Choices<ContactSolver> kSolvers{{"kinsol", ContactSolver::kKinsol},
                                       {"active_set", ContactSolver::kActiveSet}};
-const Choices<LocalContactModel> kLocalModels{{"none", LocalContactModel::kNone},
-                                              {"hertz", LocalContactModel::kHertz},
-                                              {"yang_sun", LocalContactModel::kYangSun},
-                                              {"vam", LocalContactModel::kVam}};
 const Choices<ContactTraction> kTractions{{"nodal", ContactTraction::kNodal},
                                           {"interpolated", ContactTraction::kInterpolated}};
 const Choices<PathMethod> kMethods{{"natural", PathMethod::kNatural},
@@ -225,14 +220,15 @@ IndenterSpec read_indenter(const MapReader& top) {
 
 // The kinematics decide whether the paper's traction option applies (it is defined for linear
 // kinematics: paper eqs 72-80 with a constant K_e).
-ContactSpec read_contact(const MapReader& top, Kinematics kinematics) {
+ContactSpec read_contact(const MapReader& top, Kinematics kinematics,
+                         const IndenterSpec& indenter) {
   ContactSpec contact;
   const auto map = section(top, "contact");
   if (!map) return contact;
   map->allow_only({"surface", "solver", "local", "traction", "fbar"});
   contact.surface = map->choice_or("surface", kSurfaces, contact.surface);
   contact.solver = map->choice_or("solver", kSolvers, contact.solver);
-  contact.local = map->choice_or("local", kLocalModels, contact.local);
+  contact.local = map->choice_or("local", local_contact_spellings(), contact.local);
   contact.traction = map->choice_or("traction", kTractions, contact.traction);
   contact.fbar = map->choice_or("fbar", kBooleans, contact.fbar);
   if (contact.traction == ContactTraction::kInterpolated && kinematics != Kinematics::kLinear)
@@ -255,6 +251,11 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics) {
         "a power-law local contact (hertz, yang_sun) is not available with the interpolated "
         "traction; use `traction: nodal` or `local: none | vam`",
         map->where("local"));
+  // Hertz's dent profile (contact/hertz_dent.hpp) is defined for a sphere only.
+  if ((contact.local == LocalContactModel::kHertz ||
+       contact.local == LocalContactModel::kYangSun) &&
+      indenter.shape != IndenterShape::kSphere)
+    throw_input("a Hertz-type local law needs a spherical indenter", map->where("local"));
   return contact;
 }
 
@@ -407,19 +408,24 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
                   "contact", "path", "output", "load", "loads", "supports"});
   top.at("laminate");  // say it is missing before reading the rest
   const MaterialTable materials = read_materials(top);
-  const Kinematics kinematics = top.choice_or("kinematics", kKinematics, Kinematics::kNonlinear);
-  const ShellSpec shell = read_shell(top, has_mesh_file(top));
-  return CaseFile{read_laminate(top.at("laminate"), top.where("laminate"), materials),
+  const Kinematics kinematics =
+      top.choice_or("kinematics", kinematics_spellings(), Kinematics::kNonlinear);
+  // Read in file order (the first error found is the one reported), then put together.
+  Laminate laminate = read_laminate(top.at("laminate"), top.where("laminate"), materials);
+  ShellSpec shell = read_shell(top, has_mesh_file(top));
+  MeshSpec mesh = read_mesh(top, shell.type);
+  IndenterSpec indenter = read_indenter(top);
+  ContactSpec contact = read_contact(top, kinematics, indenter);
+  PathSpec path = read_path(top);
+  OutputSpec output = read_output(top);
+  std::optional<LoadSpec> load = read_load(top);
+  return CaseFile{{{std::move(laminate), std::move(shell), std::move(mesh), kinematics,
+                    std::move(load), file_label},
+                   std::move(indenter),
+                   contact,
+                   std::move(path)},
                   materials.default_material,
-                  shell,
-                  read_mesh(top, shell.type),
-                  kinematics,
-                  read_indenter(top),
-                  read_contact(top, kinematics),
-                  read_path(top),
-                  read_output(top),
-                  read_load(top),
-                  file_label};
+                  std::move(output)};
 }
 
 CaseFile read_case_file(const std::string& path) {

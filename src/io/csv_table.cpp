@@ -6,9 +6,9 @@
 #include <optional>
 
 #include "core/decimal_number.hpp"
+#include "core/did_you_mean.hpp"
 #include "core/error.hpp"
 #include "core/value_excerpt.hpp"
-#include "io/did_you_mean.hpp"
 
 namespace si {
 namespace {

@@ -2,9 +2,9 @@
 
 #include <optional>
 
+#include "core/did_you_mean.hpp"
 #include "core/units.hpp"
 #include "core/value_excerpt.hpp"
-#include "io/did_you_mean.hpp"
 #include "io/plausible_range.hpp"
 #include "io/yaml_reader.hpp"
 #include "material/material_library.hpp"

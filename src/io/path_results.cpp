@@ -3,43 +3,11 @@
 #include <cmath>
 #include <sstream>
 
-#include "analysis/local_contact.hpp"
+#include "analysis/path_columns.hpp"
+#include "io/spellings.hpp"
 
 namespace si {
 namespace {
-
-const char* kColumns[] = {"depth_mm",
-                          "force_N",
-                          "reaction_N",
-                          "apex_w_mm",
-                          "contact_radius_mm",
-                          "contact_area_mm2",
-                          "contact_nodes",
-                          "k11_per_mm",
-                          "k12_per_mm",
-                          "k22_per_mm",
-                          "energy_Nmm",
-                          "work_Nmm",
-                          "min_gap_mm",
-                          "min_multiplier_N",
-                          "max_complementarity_Nmm",
-                          "iterations",
-                          "step",
-                          "local_indent_mm",
-                          "local_energy_Nmm",
-                          "k11_contact_min_per_mm",
-                          "k11_contact_max_per_mm",
-                          "k12_contact_min_per_mm",
-                          "k12_contact_max_per_mm",
-                          "k22_contact_min_per_mm",
-                          "k22_contact_max_per_mm"};
-
-// The columns of path_grid.csv interpolated by cubic Hermite from the points' depth slopes
-// (smooth along the branch between contact changes). The work's slope is the force, and so is
-// the strain energy's without a local law (dU/dh = T_N at equilibrium); the contact radius and
-// area step from node to node, and the counts and residuals are no functions to interpolate:
-// those stay linear.
-const char* kHermiteColumns[] = {"force_N", "apex_w_mm", "k11_per_mm", "k12_per_mm", "k22_per_mm"};
 
 // Position of `name` in `names` (path.csv's columns, the monitors); -1 if absent.
 template <class Names>
@@ -52,10 +20,6 @@ int index_of(const Names& names, const std::string& name) {
   return -1;
 }
 
-int column_index(const std::string& name) {
-  return index_of(kColumns, name);
-}
-
 // Element `name` of `values`, one per monitor (`monitors` order); NaN if absent.
 double monitor_value(const Eigen::VectorXd& values, const std::vector<std::string>& monitors,
                      const std::string& name) {
@@ -64,8 +28,11 @@ double monitor_value(const Eigen::VectorXd& values, const std::vector<std::strin
 }
 
 // The values at depth d inside the segment from a to b: cubic Hermite in the depth for the
-// kHermiteColumns whose slopes are known at both ends (error O(dh^4) where the branch is smooth,
-// against O(dh^2) for the linear interpolation used otherwise).
+// columns the table marks so (path_columns.hpp), where their slopes are known at both ends (error
+// O(dh^4) where the branch is smooth, against O(dh^2) for the linear interpolation used
+// otherwise). The work's slope is the force, and so is the strain energy's without a local law
+// (dU/dh = T_N at equilibrium); the contact radius and area step from node to node, and the
+// counts and residuals are no functions to interpolate: those stay linear.
 std::vector<double> interpolate(const PathPoint& a, const PathPoint& b, double d,
                                 const std::vector<std::string>& monitors) {
   const double d0 = a.state.depth, dd = b.state.depth - d0, t = (d - d0) / dd;
@@ -74,24 +41,49 @@ std::vector<double> interpolate(const PathPoint& a, const PathPoint& b, double d
   for (std::size_t c = 0; c < va.size(); ++c) out[c] = (1 - t) * va[c] + t * vb[c];
   const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t);
   const double h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
-  const auto hermite = [&](int c, double sa, double sb) {
-    if (c >= 0 && std::isfinite(sa) && std::isfinite(sb))
+  const auto hermite = [&](std::size_t c, double sa, double sb) {
+    if (std::isfinite(sa) && std::isfinite(sb))
       out[c] = h00 * va[c] + h10 * dd * sa + h01 * vb[c] + h11 * dd * sb;
   };
-  for (const char* name : kHermiteColumns)
-    hermite(column_index(name), monitor_value(a.depth_slopes, monitors, name),
-            monitor_value(b.depth_slopes, monitors, name));
-  const int force = column_index("force_N"), local = column_index("local_energy_Nmm");
-  hermite(column_index("work_Nmm"), va[force], vb[force]);
-  if (va[local] == 0 && vb[local] == 0) hermite(column_index("energy_Nmm"), va[force], vb[force]);
+  const std::size_t force = static_cast<std::size_t>(PathColumn::kForce);
+  const std::size_t local = static_cast<std::size_t>(PathColumn::kLocalEnergy);
+  const std::vector<ColumnSpec>& columns = path_columns();
+  for (std::size_t c = 0; c < columns.size(); ++c) switch (columns[c].grid) {
+      case GridInterpolation::kLinear:
+        break;
+      case GridInterpolation::kHermite:
+        hermite(c, monitor_value(a.depth_slopes, monitors, columns[c].name),
+                monitor_value(b.depth_slopes, monitors, columns[c].name));
+        break;
+      case GridInterpolation::kHermiteForceWithoutLocalLaw:
+        if (va[local] != 0 || vb[local] != 0) break;
+        [[fallthrough]];
+      case GridInterpolation::kHermiteForce:
+        hermite(c, va[force], vb[force]);
+        break;
+    }
   return out;
 }
 
 }  // namespace
 
+const char* run_method_name(RunMethod method) {
+  // In RunMethod's order.
+  const char* const names[] = {"linear fast path", "active_set", "natural", "pseudo_arclength"};
+  return names[static_cast<int>(method)];
+}
+
+const char* run_status_name(RunStatus status) {
+  // In RunStatus's order.
+  const char* const names[] = {"completed",      "reached_bound",       "max_steps",
+                               "step_too_small", "stopped_by_callback", "start_failed",
+                               "failed"};
+  return names[static_cast<int>(status)];
+}
+
 std::string path_csv_header() {
   std::string h;
-  for (const char* c : kColumns) h += (h.empty() ? "" : ",") + std::string(c);
+  for (const ColumnSpec& c : path_columns()) h += (h.empty() ? "" : ",") + std::string(c.name);
   return h;
 }
 
@@ -144,10 +136,10 @@ nlohmann::json events_json(const PathResult& result) {
     events.push_back({{"type", e.name},
                       {"monitor", e.monitor},
                       {"against", e.against},
-                      {"depth_mm", e.p},
-                      {"force_N", at("force_N")},
-                      {"k11_per_mm", at("k11_per_mm")},
-                      {"k22_per_mm", at("k22_per_mm")},
+                      {column_name(PathColumn::kDepth), e.p},
+                      {column_name(PathColumn::kForce), at(column_name(PathColumn::kForce))},
+                      {column_name(PathColumn::kK11), at(column_name(PathColumn::kK11))},
+                      {column_name(PathColumn::kK22), at(column_name(PathColumn::kK22))},
                       {"step", e.step},
                       {"located", e.located},
                       {"accuracy", e.accuracy}});
@@ -160,7 +152,7 @@ namespace {
 // contact.local and its constant (docs/theory/local-indentation.md).
 nlohmann::json local_contact_json(const IndentationSetup& setup) {
   const LocalContactLaw& law = setup.problem->local_law();
-  nlohmann::json j = {{"law", local_contact_name(setup.case_file.contact.local)}};
+  nlohmann::json j = {{"law", spelling(local_contact_spellings(), setup.spec.contact.local)}};
   if (law.kind == LocalLawKind::kPowerLaw) {
     j["k_N_per_mm1.5"] = law.k;
     j["dent_radius_mm"] = law.radius;  // hertz_dent.hpp; 0: uniform approach
@@ -176,14 +168,13 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
   nlohmann::json points = nlohmann::json::array();
   for (const PathPoint& p : result.points) {
     nlohmann::json row;
-    const std::vector<double> v = path_point_values(p);
-    for (std::size_t i = 0; i < v.size(); ++i) row[kColumns[i]] = v[i];
+    for (const ColumnSpec& c : path_columns()) row[c.name] = column_value(c, p);
     points.push_back(row);
   }
-  return {{"case", setup.case_file.file},
-          {"method", result.method},
+  return {{"case", setup.spec.file},
+          {"method", run_method_name(result.method)},
           {"element", m.element->name()},
-          {"kinematics", m.kinematics == Kinematics::kLinear ? "linear" : "nonlinear"},
+          {"kinematics", spelling(kinematics_spellings(), m.kinematics)},
           {"nodes", m.mesh.num_nodes()},
           {"elements", m.mesh.num_elements()},
           {"shell_unknowns", setup.problem->num_shell_unknowns()},
@@ -199,7 +190,7 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
             {"factorizations", setup.problem->counters().factorizations},
             {"solves", setup.problem->counters().solves},
             {"evaluations", setup.problem->counters().evaluations}}},
-          {"status", result.status},
+          {"status", run_status_name(result.status)},
           {"completed", result.completed},
           {"reason", result.reason},
           {"points", points},

@@ -1,9 +1,8 @@
 #include "io/vtu_writer.hpp"
 
-#include <cstdio>
-#include <fstream>
 #include <limits>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
 namespace si {
@@ -87,22 +86,7 @@ void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<Node
   for (const auto& [name, values] : fields.cell_data)
     check_field(name, values, mesh.num_elements(), "cell");
 
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream os(tmp, std::ios::trunc);
-    if (!os) throw_input("cannot open VTU file for writing", Where{tmp, "", "", 0});
-    write_grid(os, mesh, state, fields);
-    os.flush();
-    if (!os) {
-      std::remove(tmp.c_str());
-      throw_input("writing the VTU file failed (disk full?)", Where{tmp, "", "", 0});
-    }
-  }
-  // rename() replaces an existing file atomically on POSIX: readers see old or new, never half.
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw_input("cannot rename " + tmp + " to the VTU file", Where{path, "", "", 0});
-  }
+  write_file_atomically(path, [&](std::ostream& os) { write_grid(os, mesh, state, fields); });
 }
 
 }  // namespace si

@@ -20,7 +20,7 @@ struct VtuFields {
   bool deformed = true;  // points at X + u (true) or X (false)
 };
 
-// Writes `path` atomically: to path + ".tmp", then renamed. Throws an input error if a field
+// Writes `path` atomically (core/atomic_file.hpp). Throws an input error if a field
 // has the wrong number of rows or columns or clashes with the built-in names, or the file cannot
 // be written.
 void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<NodeState>& state,

@@ -3,8 +3,8 @@
 #include <charconv>
 #include <set>
 
+#include "core/did_you_mean.hpp"
 #include "core/value_excerpt.hpp"
-#include "io/did_you_mean.hpp"
 #include "io/plausible_range.hpp"
 
 namespace si {

@@ -19,8 +19,8 @@
 
 #include <vector>
 
+#include "core/sparse.hpp"
 #include "model/dof_map.hpp"
-#include "model/linear_solver.hpp"
 #include "model/mesh.hpp"
 #include "shell/shell_element.hpp"
 

@@ -21,8 +21,8 @@
 
 #include <vector>
 
+#include "core/sparse.hpp"
 #include "model/dof_map.hpp"
-#include "model/linear_solver.hpp"
 #include "model/mesh.hpp"
 #include "shell/director.hpp"
 

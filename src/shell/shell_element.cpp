@@ -5,11 +5,16 @@
 
 namespace si {
 
-std::unique_ptr<ShellElement> make_shell_element(const std::string& name) {
-  if (name == "mitc4") return std::make_unique<Quad4Shell>(mitc4_options());
-  if (name == "mitc4-plain") return std::make_unique<Quad4Shell>(mitc4_plain_options());
-  if (name == "bernstein4") return std::make_unique<Quad4Shell>(bernstein4_options());
-  throw_input("unknown shell element '" + name + "' (known: mitc4, mitc4-plain, bernstein4)");
+std::unique_ptr<ShellElement> make_shell_element(ElementType type) {
+  switch (type) {
+    case ElementType::kMitc4:
+      return std::make_unique<Quad4Shell>(mitc4_options());
+    case ElementType::kMitc4Plain:
+      return std::make_unique<Quad4Shell>(mitc4_plain_options());
+    case ElementType::kBernstein4:
+      return std::make_unique<Quad4Shell>(bernstein4_options());
+  }
+  throw Error(ErrorKind::kInternal, "make_shell_element: unknown element type");
 }
 
 }  // namespace si

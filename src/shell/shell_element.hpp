@@ -79,10 +79,12 @@ class ShellElement {
                                           Kinematics kinematics) const = 0;
 };
 
-// "mitc4" (default choice of the toolkit: MITC4 shear + EAS-4 membrane), "mitc4-plain" (MITC4
-// with the plain bilinear membrane, stiff in in-plane bending; kept for comparison) or
-// "bernstein4" (the source paper's element, kept to reproduce and measure it). Unknown name ->
-// input error listing the known names.
-std::unique_ptr<ShellElement> make_shell_element(const std::string& name);
+// The elements: mitc4 (default choice of the toolkit: MITC4 shear + EAS-4 membrane),
+// mitc4-plain (MITC4 with the plain bilinear membrane, stiff in in-plane bending; kept for
+// comparison) and bernstein4 (the source paper's element, kept to reproduce and measure it).
+// Their names ("mitc4", "mitc4-plain", "bernstein4") are ShellElement::name().
+enum class ElementType { kMitc4, kMitc4Plain, kBernstein4 };
+
+std::unique_ptr<ShellElement> make_shell_element(ElementType type);
 
 }  // namespace si

@@ -9,8 +9,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "../indentation/indentation_test_support.hpp"
 #include "analysis/indentation_run.hpp"
-#include "indentation_test_support.hpp"
 #include "io/csv_table.hpp"
 #include "io/path_results.hpp"
 
@@ -73,7 +73,7 @@ TEST(IndentationPaths, ActiveSetGridAgreesWithKinsol) {
   IndentationSetup active_set(c, 1);
   const PathResult b = run_indentation_path(active_set);
   ASSERT_TRUE(b.completed) << b.reason;
-  EXPECT_EQ(b.method, "active_set");
+  EXPECT_EQ(b.method, RunMethod::kActiveSet);
   for (const PathPoint& q : b.points) {
     for (const PathPoint& p : a.points) {
       if (std::abs(p.state.depth - q.state.depth) < 1e-12) {

@@ -6,8 +6,9 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "../indentation/indentation_test_support.hpp"
 #include "analysis/indentation_run.hpp"
-#include "indentation_test_support.hpp"
+#include "analysis/path_columns.hpp"
 
 namespace si {
 namespace {

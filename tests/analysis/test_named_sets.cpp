@@ -11,8 +11,8 @@
 #include "../model/mesh_test_support.hpp"
 #include "../model/msh_test_writer.hpp"
 #include "../verification/point_load_support.hpp"
-#include "analysis/shell_model.hpp"
 #include "model/mesh_quality.hpp"
+#include "model/shell_model.hpp"
 
 namespace si {
 namespace {

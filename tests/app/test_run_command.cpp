@@ -1,8 +1,15 @@
 // End-to-end tests of `shellindent run`: the files and columns written, the table, exit codes
 // for bad input (indenter that never touches, starts inside, bad radius) and the kept points of
-// a run that stops early.
+// a run that stops early, and the message of a run interrupted by Ctrl-C.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -206,6 +213,50 @@ TEST(RunCommand, LocalLawAddsTheLocalIndentationColumnToTheTable) {
   // The dent profile's radius: hertz's relative radius of the sphere on the cap.
   EXPECT_NEAR(json["local_contact"]["dent_radius_mm"].get<double>(), 1 / (1 / 12.7 + 1 / 80.9),
               1e-9);
+}
+
+// Ctrl-C (SIGINT) stops the run after the current point: every converged point is written, the
+// status says the run was stopped, and the message says it was interrupted, not "stopped by the
+// callback" (issue 13 item 15). The signal is sent once the first progress line is on stderr, so
+// the handler is in place; the path is long enough not to end first.
+TEST(RunCommand, CtrlCStopsTheRunAndSaysItWasInterrupted) {
+  const fs::path dir = fresh_dir("run_interrupt");
+  const fs::path c =
+      write_case(dir, cap_case("nonlinear", "{shape: sphere, radius: 12.7 mm}",
+                               "{method: natural, depth_max: 10 mm, step: 0.01 mm}"));
+  const fs::path out = dir / "out", log = dir / "stderr.txt";
+  std::vector<std::string> args{SHELLINDENT_EXE, "run", c.string(), "--out", out.string()};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, SHELLINDENT_EXE, &actions, nullptr, argv.data(), nullptr), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  const auto start = std::chrono::steady_clock::now();
+  bool started = false;
+  while (!started && std::chrono::steady_clock::now() - start < std::chrono::seconds(120)) {
+    started = contains(testing::read_file(log), "depth ");
+    if (!started) usleep(10000);
+  }
+  kill(pid, started ? SIGINT : SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(started) << testing::read_file(log);
+  const std::string err = testing::read_file(log);
+  ASSERT_TRUE(WIFEXITED(status)) << err;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << err;
+  EXPECT_TRUE(contains(err, "interrupted (Ctrl-C)")) << err;
+  EXPECT_FALSE(contains(err, "stopped by the callback")) << err;
+  const auto json = nlohmann::json::parse(testing::read_file(out / "path.json"));
+  EXPECT_EQ(json["status"], "stopped_by_callback");
+  EXPECT_FALSE(json["completed"].get<bool>());
+  EXPECT_GE(json["points"].size(), 1u);
+  EXPECT_LT(json["points"].back()["depth_mm"].get<double>(), 10.0);
 }
 
 }  // namespace

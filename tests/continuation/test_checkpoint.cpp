@@ -7,7 +7,9 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <vector>
 
+#include "branch_test_support.hpp"
 #include "bratu_problem.hpp"
 #include "continuation/checkpoint.hpp"
 #include "continuation/natural.hpp"
@@ -23,6 +25,17 @@ std::string temp_path(const std::string& name) {
   const auto* info = testing::UnitTest::GetInstance()->current_test_info();
   return testing::TempDir() + "cont_" + info->name() + "_" + name;
 }
+
+// A plain writer (branch_test_support.hpp) that records the paths it was given.
+struct RecordingWriter {
+  std::vector<std::string> paths;
+  FileWriter writer() {
+    return [this](const std::string& path, const std::string& content) {
+      paths.push_back(path);
+      test::plain_file_writer()(path, content);
+    };
+  }
+};
 
 Settings bratu_settings(Method method) {
   Settings s;
@@ -81,6 +94,8 @@ void expect_resume_reproduces(Method method, bool keeps_x) {
   ASSERT_GT(reference.points.size(), 15u);  // so that the kill at step 13 interrupts it
 
   Settings s = plain;
+  RecordingWriter files;
+  s.checkpoint_writer = files.writer();
   s.checkpoint_path = temp_path("run.json");
   s.checkpoint_interval = 5;
   s.checkpoint_keeps_x = keeps_x;
@@ -91,6 +106,9 @@ void expect_resume_reproduces(Method method, bool keeps_x) {
     return false;
   });
   ASSERT_TRUE(fs::exists(killed)) << "the run ended before step 13";
+  // The start and steps 5 and 10, all through the caller's writer; none at the stop (a run
+  // stopped by its callback keeps its last periodic checkpoint, tracer.cpp finish()).
+  EXPECT_EQ(files.paths, std::vector<std::string>(3, s.checkpoint_path));
   const Checkpoint checkpoint = load_checkpoint(killed);
   EXPECT_EQ(checkpoint.branch.points.size(), 11u);  // start + 10 steps
   EXPECT_EQ(checkpoint.branch.status, Status::kRunning);
@@ -136,6 +154,7 @@ Settings line_settings(const std::string& path) {
   s.p_min = 0.0;
   s.p_max = 1.0;
   s.checkpoint_path = path;
+  s.checkpoint_writer = test::plain_file_writer();
   s.checkpoint_interval = 3;
   return s;
 }
@@ -205,8 +224,10 @@ TEST(ContCheckpoint, JsonRoundTripIsExact) {
   c.state.previous_p = 2.0 / 3.0;
 
   const std::string path = temp_path("roundtrip.json");
-  save_checkpoint(path, c);
-  EXPECT_FALSE(fs::exists(path + ".tmp"));  // written to the temporary, then renamed
+  RecordingWriter files;
+  save_checkpoint(path, c, true, files.writer());
+  EXPECT_EQ(files.paths, std::vector<std::string>{path});  // through the caller's writer only
+  EXPECT_EQ(checkpoint_text(c, true).back(), '\n');
   const Checkpoint r = load_checkpoint(path);
   fs::remove(path);
 
@@ -231,13 +252,22 @@ TEST(ContCheckpoint, JsonRoundTripIsExact) {
 
   // Without the points' x (Settings::checkpoint_keeps_x = false) the events lose theirs too;
   // the state keeps its own.
-  save_checkpoint(path, c, false);
+  save_checkpoint(path, c, false, files.writer());
   const Checkpoint lean = load_checkpoint(path);
   fs::remove(path);
   EXPECT_EQ(lean.branch.points[0].x.size(), 0);
   EXPECT_EQ(lean.branch.events[0].x.size(), 0);
   EXPECT_EQ(lean.branch.events[0].p, 1.0 / 7.0);
   EXPECT_TRUE((lean.state.current.point.x.array() == pt.x.array()).all());
+}
+
+TEST(ContCheckpoint, PathWithoutWriterRejected) {
+  Settings s = bratu_settings(Method::kPseudoArclength);
+  s.checkpoint_path = temp_path("nowhere.json");
+  EXPECT_THROW(s.validate(), std::invalid_argument);
+  RecordingWriter files;
+  s.checkpoint_writer = files.writer();
+  EXPECT_NO_THROW(s.validate());
 }
 
 TEST(ContCheckpoint, MissingOrForeignFileRejectedWithItsName) {

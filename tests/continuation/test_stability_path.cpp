@@ -260,6 +260,7 @@ TEST(ContStability, CheckpointKeepsStabilityAndSwitchingData) {
   test::RigidBarColumn column(2.0, 0.5);
   Settings s = column_settings();
   s.checkpoint_path = ::testing::TempDir() + "stability_checkpoint.json";
+  s.checkpoint_writer = test::plain_file_writer();
   s.checkpoint_interval = 1;
   const Branch branch = pseudo_arclength(column, Vector{{0.0, 0.5, 0.0}}, 0.0, s);
   const Checkpoint loaded = load_checkpoint(s.checkpoint_path);
@@ -295,6 +296,7 @@ TEST(ContStability, ResumedRunRepeatsTheUninterruptedOne) {
   test::RigidBarColumn column(2.0, 0.5);
   const Branch full = pseudo_arclength(column, x0, 0.0, s);
   s.checkpoint_path = ::testing::TempDir() + "stability_resume.json";
+  s.checkpoint_writer = test::plain_file_writer();
   s.checkpoint_interval = 3;
   int calls = 0;
   const Branch cut = pseudo_arclength(

@@ -100,7 +100,11 @@ TEST(VtuWriter, ReferenceCoordinatesAndBadFields) {
   fields.cell_data.clear();
   fields.point_data["displacement"] = Eigen::MatrixXd::Zero(4, 3);
   EXPECT_THROW(write_vtu(path, m, state, fields), Error);
-  EXPECT_THROW(write_vtu("/nonexistent_dir/x.vtu", m, state, {}), Error);
+  // A directory that cannot be made (its parent is a file): an input error, nothing written.
+  const std::string file = (std::filesystem::temp_directory_path() / "si_test_vtu_file").string();
+  std::ofstream(file) << "a file";
+  EXPECT_THROW(write_vtu(file + "/x.vtu", m, state, {}), Error);
+  std::filesystem::remove(file);
 }
 
 }  // namespace

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
+#include "analysis/static_solver.hpp"
 #include "core/error.hpp"
 #include "model/assembler.hpp"
 #include "model/dof_map.hpp"
-#include "model/static_solver.hpp"
 #include "model/supports.hpp"
 #include "test_meshes.hpp"
 
@@ -146,7 +146,7 @@ TEST(Loads, NodalMomentBendsALinearCantileverUniformly) {
   const double EI = E * b * t * t * t / 12;
   const Mesh m = square_plate(4, 1, L, b);
   const DofMap dofs = make_dof_map(m, {{SupportKind::kClamped, "left", -1, {}}});
-  const auto element = make_shell_element("mitc4");
+  const auto element = make_shell_element(ElementType::kMitc4);
   Loads loads;
   loads.moments.push_back({"right", Vector3d(0, -M, 0), false});
   StaticSettings settings;

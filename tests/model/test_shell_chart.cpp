@@ -15,7 +15,7 @@ namespace {
 struct ChartFixture {
   Mesh mesh = testing::quarter_cap(3, 6.0, 20.0);
   DofMap dofs = make_dof_map(mesh, {{SupportKind::kClamped, "left", -1, {}}});
-  std::unique_ptr<ShellElement> element = make_shell_element("mitc4");
+  std::unique_ptr<ShellElement> element = make_shell_element(ElementType::kMitc4);
   Assembler assembler{
       mesh, dofs, *element, isotropic_shell_law(7e4, 0.3, 0.5), Kinematics::kNonlinear, 1};
   ShellChart chart{mesh, dofs};

@@ -53,8 +53,8 @@ struct PatchResult {
   ElementStrains sample;    // recovered strains of the central element
 };
 
-PatchResult run_patch(const std::string& element_name, Field field, const Vector6d& R_exact) {
-  const auto element = make_shell_element(element_name);
+PatchResult run_patch(ElementType type, Field field, const Vector6d& R_exact) {
+  const auto element = make_shell_element(type);
   const ShellMesh mesh = macneal_harder_patch();
   const ShellLaw law = isotropic_shell_law(kPatchE, kPatchNu, kPatchT);
   const Eigen::MatrixXd K = test::assemble_linear_stiffness(*element, mesh, law);
@@ -91,8 +91,9 @@ PatchResult run_patch(const std::string& element_name, Field field, const Vector
 TEST(Mitc4Patch, MacNealHarderMembrane_Sigma1333_Tau400) {
   Vector6d R_exact;
   R_exact << 1e-3, 1e-3, 1e-3, 0, 0, 0;
-  for (const std::string name : {"mitc4", "mitc4-plain"}) {
-    const PatchResult r = run_patch(name, membrane_field, R_exact);
+  for (const ElementType type : {ElementType::kMitc4, ElementType::kMitc4Plain}) {
+    const std::string name = make_shell_element(type)->name();
+    const PatchResult r = run_patch(type, membrane_field, R_exact);
     const ShellLaw law = isotropic_shell_law(kPatchE, kPatchNu, kPatchT);
     const Vector6d N = law.A_R * r.sample.R[0];
     std::cout << name << " membrane patch: dof error " << r.dof_error << ", strain error "
@@ -118,8 +119,9 @@ TEST(Mitc4Patch, MacNealHarderMembrane_Sigma1333_Tau400) {
 TEST(Mitc4Patch, MacNealHarderBending_M1111e10_M3333e11) {
   Vector6d R_exact;
   R_exact << 0, 0, 0, -1e-3, -1e-3, -1e-3;
-  for (const std::string name : {"mitc4", "mitc4-plain"}) {
-    const PatchResult r = run_patch(name, bending_field, R_exact);
+  for (const ElementType type : {ElementType::kMitc4, ElementType::kMitc4Plain}) {
+    const std::string name = make_shell_element(type)->name();
+    const PatchResult r = run_patch(type, bending_field, R_exact);
     const ShellLaw law = isotropic_shell_law(kPatchE, kPatchNu, kPatchT);
     const Vector6d M = law.A_R * r.sample.R[2];
     const double D = kPatchE * std::pow(kPatchT, 3) / (12 * (1 - kPatchNu * kPatchNu));
@@ -144,7 +146,7 @@ TEST(Mitc4Patch, MacNealHarderBending_M1111e10_M3333e11) {
 // 1/2 (U^T U - I) is then constant and must be recovered exactly at every node, with zero
 // curvature and shear, and the interior nodes must be in equilibrium (zero assembled force).
 TEST(Mitc4Patch, MacNealHarderMembrane_FiniteHomogeneousStrain_Nonlinear) {
-  const auto element = make_shell_element("mitc4");
+  const auto element = make_shell_element(ElementType::kMitc4);
   const ShellMesh mesh = macneal_harder_patch();
   const ShellLaw law = isotropic_shell_law(kPatchE, kPatchNu, kPatchT);
   const Matrix3d Q = rotation_matrix(0.7 * Vector3d(0.3, 0.5, 0.8).normalized());
@@ -219,7 +221,7 @@ double clamped_plate_centre_deflection(const ShellElement& element, double a, do
 // shear taken pointwise (no tying) must lock, which shows the test can fail.
 TEST(Mitc4Locking, ClampedSquarePlate_TimoshenkoTable35_0_00126532) {
   const double a = 100, E = 2.0e5, nu = 0.3, q = 1e-3;
-  const auto mitc4 = make_shell_element("mitc4");
+  const auto mitc4 = make_shell_element(ElementType::kMitc4);
   const Quad4Shell plain({"bilinear-plain-shear", ShapeSet::kBilinear, ShearTreatment::kPlain, 2});
   for (double ratio : {10.0, 100.0, 1000.0}) {
     const double t = a / ratio;
@@ -249,7 +251,7 @@ namespace {
 // (sum N_I != 1), and it fails the MacNeal-Harder membrane patch test by a large margin. These
 // are recorded defects, not targets: the assertions only check that the defects are present.
 TEST(Bernstein4Defects, RigidTranslationHasStrainEnergy) {
-  const auto element = make_shell_element("bernstein4");
+  const auto element = make_shell_element(ElementType::kBernstein4);
   const ShellLaw law = isotropic_shell_law(kPatchE, kPatchNu, kPatchT);
   ElementGeometry g;
   g.X = {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, 0)};
@@ -275,8 +277,9 @@ TEST(Bernstein4Defects, RigidTranslationHasStrainEnergy) {
 // a unit square changes when it is moved by 10 along x. mitc4 is the control (identical).
 TEST(Bernstein4Defects, StiffnessDependsOnElementPosition) {
   const ShellLaw law = isotropic_shell_law(kPatchE, kPatchNu, kPatchT);
-  for (const char* name : {"mitc4", "bernstein4"}) {
-    const auto element = make_shell_element(name);
+  for (const ElementType type : {ElementType::kMitc4, ElementType::kBernstein4}) {
+    const auto element = make_shell_element(type);
+    const std::string name = element->name();
     Matrix20d K[2];
     for (int k = 0; k < 2; ++k) {
       ElementGeometry g;
@@ -293,7 +296,7 @@ TEST(Bernstein4Defects, StiffnessDependsOnElementPosition) {
     }
     const double change = (K[1] - K[0]).norm() / K[0].norm();
     std::cout << name << " stiffness change when the element is moved by 10: " << change << "\n";
-    if (std::string(name) == "mitc4") {
+    if (type == ElementType::kMitc4) {
       EXPECT_LT(change, 1e-12);
     } else {
       EXPECT_GT(change, 1e-2);
@@ -305,8 +308,8 @@ TEST(Bernstein4Defects, FailsMacNealHarderPatchTests) {
   Vector6d membrane, bending;
   membrane << 1e-3, 1e-3, 1e-3, 0, 0, 0;
   bending << 0, 0, 0, -1e-3, -1e-3, -1e-3;
-  const PatchResult m = run_patch("bernstein4", membrane_field, membrane);
-  const PatchResult b = run_patch("bernstein4", bending_field, bending);
+  const PatchResult m = run_patch(ElementType::kBernstein4, membrane_field, membrane);
+  const PatchResult b = run_patch(ElementType::kBernstein4, bending_field, bending);
   std::cout << "bernstein4 membrane patch: dof error " << m.dof_error << ", strain error "
             << m.strain_error << "; bending patch: dof error " << b.dof_error << ", strain error "
             << b.strain_error << "\n";
@@ -342,7 +345,7 @@ RolledCantilever roll_cantilever(int n) {
       mesh.D.push_back(Vector3d::UnitZ());  // V1 = e1, V2 = e2
     }
   for (int i = 0; i < n; ++i) mesh.quads.push_back({i, i + 1, i + n + 2, i + n + 1});
-  const auto element = make_shell_element("mitc4");
+  const auto element = make_shell_element(ElementType::kMitc4);
   const ShellLaw law = isotropic_shell_law(E, 0.0, t);
   const double M = 2 * M_PI * (E * b * t * t * t / 12) / L;
   std::vector<bool> fixed(mesh.dofs(), false);

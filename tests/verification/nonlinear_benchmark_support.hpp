@@ -1,6 +1,6 @@
 // Shared set-up of the geometrically nonlinear shell benchmarks (Sze, Liu & Lo 2004; reference
 // data in ../shared/benchmarks/nonlinear.md): one load-controlled run of the production Newton
-// driver (model/static_solver.hpp) with the mitc4 element, and the comparison of recorded
+// driver (analysis/static_solver.hpp) with the mitc4 element, and the comparison of recorded
 // displacements with a tabulated load-displacement path.
 #pragma once
 
@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "../verification_record.hpp"
+#include "analysis/static_solver.hpp"
 #include "model/plate_meshes.hpp"
-#include "model/static_solver.hpp"
 #include "model/supports.hpp"
 #include "shell/shell_element.hpp"
 
@@ -56,7 +56,7 @@ inline BenchmarkRun run_mitc4_nonlinear(const Mesh& mesh, const std::vector<Supp
                                         const Loads& loads, const ShellLaw& law,
                                         const StaticSettings& settings) {
   const DofMap dofs = make_dof_map(mesh, supports);
-  const auto element = make_shell_element("mitc4");
+  const auto element = make_shell_element(ElementType::kMitc4);
   StaticSolver solver(mesh, dofs, *element, law, Kinematics::kNonlinear, loads, settings, 1);
   BenchmarkRun run;
   run.state = reference_state(mesh);

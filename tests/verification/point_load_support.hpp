@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "analysis/shell_model.hpp"
+#include "analysis/static_solver.hpp"
 #include "io/case_file.hpp"
 #include "model/assembler.hpp"
-#include "model/static_solver.hpp"
+#include "model/shell_model.hpp"
 
 namespace si::testing {
 

@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
+#include "analysis/static_solver.hpp"
 #include "model/assembler.hpp"
 #include "model/loads.hpp"
 #include "model/mesh.hpp"
-#include "model/static_solver.hpp"
 #include "model/supports.hpp"
 #include "section/gauss_legendre.hpp"
 #include "shell/shape4.hpp"
@@ -82,9 +82,9 @@ inline void add_surface_traction(BenchmarkModel& model, const Traction& traction
 // Solves the model with the production linear path: supports -> dof map, StaticSolver with
 // Kinematics::kLinear and one load level.
 inline BenchmarkSolution solve_linear(const BenchmarkModel& model,
-                                      const std::string& element_name = "mitc4") {
+                                      ElementType element_type = ElementType::kMitc4) {
   const auto start = std::chrono::steady_clock::now();
-  const auto element = make_shell_element(element_name);
+  const auto element = make_shell_element(element_type);
   const DofMap dofs = make_dof_map(model.mesh, model.supports);
   StaticSettings settings;
   settings.steps = 1;

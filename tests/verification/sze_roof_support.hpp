@@ -34,7 +34,7 @@ struct SzeRoof {
   Mesh mesh;
   std::vector<Support> supports = quarter_roof_supports();
   Loads loads;
-  std::unique_ptr<ShellElement> element = make_shell_element("mitc4");
+  std::unique_ptr<ShellElement> element = make_shell_element(ElementType::kMitc4);
   ShellLaw law;
   LoadProblemOptions options;
 };

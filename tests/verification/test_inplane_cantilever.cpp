@@ -29,7 +29,7 @@ double timoshenko_tip_deflection(double P) {
 }
 
 // Mean in-plane deflection of the tip nodes of an n_length x n_depth mesh.
-ConvergenceRow inplane_cantilever(const std::string& element, int n_length, int n_depth) {
+ConvergenceRow inplane_cantilever(ElementType element, int n_length, int n_depth) {
   const double P = 1;
   BenchmarkModel m;
   m.mesh = rectangular_plate_mesh(kLength, kDepth, n_length, n_depth);
@@ -41,15 +41,16 @@ ConvergenceRow inplane_cantilever(const std::string& element, int n_length, int 
   expect_equilibrium(s);
   double mean = 0;
   for (int node : tip) mean += s.state[node].u.y() / tip.size();
-  return {element + " " + std::to_string(n_length) + "x" + std::to_string(n_depth), mean,
-          s.seconds};
+  return {make_shell_element(element)->name() + " " + std::to_string(n_length) + "x" +
+              std::to_string(n_depth),
+          mean, s.seconds};
 }
 
 TEST(InPlaneCantilever, TipShear_Mitc4_10x1_and_10x2_TimoshenkoBeam_PL3over3EI_plus_PLoverkGA) {
   const double reference = timoshenko_tip_deflection(1);
   for (int n_depth : {1, 2}) {
-    const ConvergenceRow eas = inplane_cantilever("mitc4", 10, n_depth);
-    const ConvergenceRow plain = inplane_cantilever("mitc4-plain", 10, n_depth);
+    const ConvergenceRow eas = inplane_cantilever(ElementType::kMitc4, 10, n_depth);
+    const ConvergenceRow plain = inplane_cantilever(ElementType::kMitc4Plain, 10, n_depth);
     for (const ConvergenceRow& r : {eas, plain})
       std::printf("in-plane cantilever %s: tip %.6g, Timoshenko %.6g, ratio %.4f\n", r.mesh.c_str(),
                   r.value, reference, r.value / reference);

@@ -22,7 +22,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "../analysis/indentation_test_support.hpp"
+#include "../indentation/indentation_test_support.hpp"
 #include "../verification_record.hpp"
 #include "analysis/indentation_run.hpp"
 #include "analysis/local_contact.hpp"
@@ -529,17 +529,22 @@ TEST(LocalIndentationVerification, ThinLayerVam_FastPathMatchesKinsolAndWorkIsEx
 }
 
 // ---------------------------------------------------------------------------------------------
-// 6. A Hertz-type law needs a sphere: an input error naming contact.local and its value.
+// 6. A Hertz-type law needs a sphere: the case-file reader refuses another shape with an input
+// error naming contact.local, its value and its line.
 TEST(LocalIndentationVerification, HertzWithFlatPunch_IsAnInputErrorNamingContactLocal) {
-  CaseFile c = plate_case(3.8, quarter_mesh(2.0, 4.0), "yang_sun", 0.05, 0.01);
-  c.indenter.shape = IndenterShape::kFlatPunch;
+  const std::string yaml =
+      "material: {type: isotropic, E: 70000 MPa, nu: 0.3}\n"
+      "laminate: {layup: \"[0]\", ply_thickness: 3.8 mm}\n"
+      "indenter: {shape: flat_punch, radius: 5 mm}\n"
+      "contact: {local: yang_sun}\n";
   try {
-    local_contact_law(c);
+    parse_case_file(yaml, "punch.yaml");
     ADD_FAILURE() << "accepted";
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::kInput);
     EXPECT_EQ(e.where().key, "contact.local");
     EXPECT_EQ(e.where().value, "yang_sun");
+    EXPECT_EQ(e.where().line, 4);
   }
 }
 

@@ -14,7 +14,7 @@
 
 #include "../section/laminate_fixtures.hpp"
 #include "../section/pagano_plate.hpp"
-#include "analysis/nodal_resultants.hpp"
+#include "model/nodal_resultants.hpp"
 #include "model/patch_fit.hpp"
 #include "model/plate_meshes.hpp"
 #include "section/through_thickness_recovery.hpp"
@@ -54,7 +54,7 @@ MeshSolution solve_mesh(const VamSection& section, double S, int n) {
     return Vector3d(0, 0, -q0 * std::sin(kPi * x.x() / a) * std::sin(kPi * x.y() / a));
   });
   const BenchmarkSolution s = solve_linear(m);
-  const auto element = make_shell_element("mitc4");
+  const auto element = make_shell_element(ElementType::kMitc4);
   const DofMap dofs = make_dof_map(m.mesh, m.supports);
   const Assembler assembler(m.mesh, dofs, *element, m.law, Kinematics::kLinear, 1);
   MeshSolution out{m.mesh, nodal_strains(m.mesh, assembler, *element, s.state), q0};

@@ -1,0 +1,10 @@
+#include "analysis/indentation_case.hpp"
+
+namespace si {
+
+double contact_face_offset(const IndentationCase& c) {
+  const double top = 0.5 * c.laminate.thickness() - c.laminate.reference_offset;
+  return c.contact.surface == ContactSurface::kOuter ? top : -c.laminate.reference_offset;
+}
+
+}  // namespace si

@@ -1,0 +1,23 @@
+// Everything an indentation run is built from: the shell model's spec (laminate, shell, mesh,
+// kinematics), the indenter, the contact and the path. io/case_file.hpp reads a case file into
+// it (CaseFile extends it with the output settings); the runs take nothing else.
+#pragma once
+
+#include "analysis/contact_spec.hpp"
+#include "analysis/path_spec.hpp"
+#include "contact/indenter_spec.hpp"
+#include "model/shell_model.hpp"
+
+namespace si {
+
+struct IndentationCase : ShellModelSpec {
+  IndenterSpec indenter;
+  ContactSpec contact;
+  PathSpec path;
+};
+
+// The contact face offset of a case: the laminate's top face (contact.surface: outer) or its
+// mid-surface (contact.surface: mid, the paper's choice), measured from the reference surface.
+double contact_face_offset(const IndentationCase& c);
+
+}  // namespace si

@@ -1,0 +1,85 @@
+// The result columns of an indentation path, declared once: name, unit, meaning, how the value
+// is computed from a point, whether the continuation monitors it and how path_grid.csv
+// interpolates it. Everything that reads or writes a column goes through this table: path.csv,
+// path.json and path_grid.csv (io/path_results.hpp), the checkpoint's points
+// (indentation_run.cpp), the continuation's monitors (IndentationOptions::monitors), the events,
+// the sweep's merged table (app/sweep_command.cpp), docs/results.md and studies/result_columns.py
+// (both generated from it by scripts/update_schema.sh; tests/io/test_column_tables.cpp fails
+// if they differ from it).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "analysis/indentation_run.hpp"
+
+namespace si {
+
+// In path.csv's order.
+enum class PathColumn {
+  kDepth,
+  kForce,
+  kReaction,
+  kApexDeflection,
+  kContactRadius,
+  kContactArea,
+  kContactNodes,
+  kK11,
+  kK12,
+  kK22,
+  kEnergy,
+  kWork,
+  kMinGap,
+  kMinMultiplier,
+  kMaxComplementarity,
+  kIterations,
+  kStep,
+  kLocalIndent,
+  kLocalEnergy,
+  kK11ContactMin,
+  kK11ContactMax,
+  kK12ContactMin,
+  kK12ContactMax,
+  kK22ContactMin,
+  kK22ContactMax
+};
+
+// How path_grid.csv interpolates a column between two converged points (docs/results.md).
+enum class GridInterpolation {
+  kLinear,
+  kHermite,       // cubic Hermite in the depth with the column's depth slopes (a monitor's)
+  kHermiteForce,  // the same with the force as slope (the work: dW/dh = T_N)
+  // The same where the local energy is zero at both ends (the strain energy without a local
+  // law: dU/dh = T_N at equilibrium), linear otherwise.
+  kHermiteForceWithoutLocalLaw
+};
+
+struct ColumnSpec {
+  PathColumn id;
+  const char* name;         // "force_N": the column's name in every file
+  const char* unit;         // "N", "mm", "1/mm", "-"
+  std::string description;  // docs/results.md
+  // The value: of the point's state, or (for the run's own columns) of the point.
+  double (*of_state)(const IndentationState&) = nullptr;
+  double (*of_point)(const PathPoint&) = nullptr;
+  void (*restore)(PathPoint&, double) = nullptr;  // the inverse (checkpoints)
+  bool monitor = false;  // a continuation monitor (of_state, no assembly needed)
+  GridInterpolation grid = GridInterpolation::kLinear;
+};
+
+// All columns, in path.csv's order (the order of PathColumn).
+const std::vector<ColumnSpec>& path_columns();
+const ColumnSpec& path_column(PathColumn id);
+const char* column_name(PathColumn id);
+double column_value(const ColumnSpec& c, const PathPoint& p);
+
+// A point's values in column order, and the point they restore (its per-node vectors empty).
+std::vector<double> path_point_values(const PathPoint& p);
+PathPoint path_point_from_values(const std::vector<double>& v);
+
+// The monitor columns, in column order: the continuation's monitors of an indentation run.
+std::vector<StateMonitor> path_monitors();
+// Their values at a state, in the same order.
+Eigen::VectorXd monitor_values(const IndentationState& s);
+
+}  // namespace si

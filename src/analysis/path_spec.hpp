@@ -1,0 +1,23 @@
+// The indentation depth path of a run (docs/case-file.md `path`).
+#pragma once
+
+#include <vector>
+
+namespace si {
+
+enum class PathMethod { kNatural, kPseudoArclength };
+
+// All lengths in mm.
+struct PathSpec {
+  PathMethod method = PathMethod::kPseudoArclength;
+  double depth_max = 10.0;
+  double step = 0.1;
+  double step_min = 1e-4;      // default: step / 1000
+  double step_max = 1.0;       // default: min(10 step, depth_max)
+  std::vector<double> depths;  // optional explicit depths to stop at, increasing, <= depth_max
+};
+
+// The depth grid of a path: `depths`, or step, 2 step, ..., depth_max.
+std::vector<double> depth_grid(const PathSpec& path);
+
+}  // namespace si

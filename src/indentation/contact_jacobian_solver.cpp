@@ -1,0 +1,256 @@
+#include "indentation/contact_jacobian_solver.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+
+namespace si {
+namespace {
+
+// Condensation floor (see the header): a fully active candidate becomes a penalty kappa / eps.
+// 1e-8 keeps H's condition within what a double-precision Cholesky resolves to about 1e-8, and
+// the preconditioned operator within about 1e-6 of the identity on the contact rows.
+constexpr double kCondensationFloor = 1e-8;
+// A fresh factor needs 1-2 GMRES products per solve on the paper's cap; refreshing it once a solve
+// needs more than 3 was the fastest of 3, 6 and 10 on the cap at 1e4 unknowns
+// (docs/performance.md); the factor is kept across factorize() calls (Newton iterations, steps)
+// until a solve needs more than this, or it is older than kMaxPreconditionerAge linearisations.
+constexpr int kRefreshProducts = 3;
+constexpr int kMaxPreconditionerAge = 20;
+
+}  // namespace
+
+ContactJacobianSolver::ContactJacobianSolver(double kappa, LinearSolverKind fallback,
+                                             double relative_tolerance)
+    : kappa_(kappa), fallback_(fallback) {
+  SI_REQUIRE(relative_tolerance > 0 && relative_tolerance < 1,
+             "contact Jacobian: the Krylov tolerance must lie in (0, 1)");
+  gmres_.relative_tolerance = relative_tolerance;
+}
+
+ContactJacobianSolver::~ContactJacobianSolver() = default;
+
+int ContactJacobianSolver::shell_slot(int row, int col) const {
+  const int* begin = H_.innerIndexPtr() + H_.outerIndexPtr()[col];
+  const int* end = H_.innerIndexPtr() + H_.outerIndexPtr()[col + 1];
+  const int* it = std::lower_bound(begin, end, row);
+  SI_REQUIRE(it != end && *it == row, "contact Jacobian: entry outside the shell pattern");
+  return static_cast<int>(it - H_.innerIndexPtr());
+}
+
+// The shell block's pattern is that of the assembled shell: fixed for the problem.
+void ContactJacobianSolver::analyze_shell(const SparseMatrix& J, int num_shell) {
+  num_shell_ = num_shell;
+  H_ = J.topLeftCorner(num_shell, num_shell);
+  H_.makeCompressed();
+  mirror_.resize(H_.nonZeros());
+  for (int c = 0; c < num_shell; ++c)
+    for (int k = H_.outerIndexPtr()[c]; k < H_.outerIndexPtr()[c + 1]; ++k)
+      mirror_[k] = shell_slot(c, H_.innerIndexPtr()[k]);  // shell patterns are symmetric
+  cholesky_ = make_linear_solver(LinearSolverKind::kCholmod);
+  cholesky_->analyze(H_);
+  rotation_slots_.clear();
+  analyzed_outer_.clear();
+  has_preconditioner_ = false;
+}
+
+// J's pattern changes with the candidate set: new slots, new rows. The Cholesky factor stays:
+// it depends on the shell block and the rows it condensed, which the candidates appended by
+// Problem::adapt leave as they were (factorize() lets GMRES carry the new rows).
+void ContactJacobianSolver::map_jacobian(const SparseMatrix& J) {
+  j_slot_.resize(H_.nonZeros());
+  for (int c = 0; c < num_shell_; ++c) {
+    const int* begin = J.innerIndexPtr() + J.outerIndexPtr()[c];
+    const int* end = J.innerIndexPtr() + J.outerIndexPtr()[c + 1];
+    for (int k = H_.outerIndexPtr()[c]; k < H_.outerIndexPtr()[c + 1]; ++k)
+      j_slot_[k] =
+          static_cast<int>(std::lower_bound(begin, end, H_.innerIndexPtr()[k]) - J.innerIndexPtr());
+  }
+  analyzed_outer_.assign(J.outerIndexPtr(), J.outerIndexPtr() + J.outerSize() + 1);
+  row_slots_.clear();
+  lu_.reset();
+}
+
+void ContactJacobianSolver::transpose_transform(
+    const std::vector<ShellChart::RotationBlock>& rotations, Eigen::VectorXd& v) {
+  for (const ShellChart::RotationBlock& r : rotations) {
+    if (r.eq_a >= 0 && r.eq_b >= 0) {
+      const double a = v[r.eq_a], b = v[r.eq_b];
+      v[r.eq_a] = r.T(0, 0) * a + r.T(1, 0) * b;
+      v[r.eq_b] = r.T(0, 1) * a + r.T(1, 1) * b;
+    } else if (r.eq_a >= 0) {
+      v[r.eq_a] *= r.T(0, 0);
+    } else if (r.eq_b >= 0) {
+      v[r.eq_b] *= r.T(1, 1);
+    }
+  }
+}
+
+// H = sym(T^T A) + condensed rows from the current linearisation; false if H is not positive
+// definite.
+bool ContactJacobianSolver::refresh_preconditioner() {
+  if (rotation_slots_.empty())
+    for (std::size_t i = 0; i < rotations_.size(); ++i) {
+      const ShellChart::RotationBlock& r = rotations_[i];
+      const int lead = r.eq_a >= 0 ? r.eq_a : r.eq_b;
+      for (int k = H_.outerIndexPtr()[lead]; k < H_.outerIndexPtr()[lead + 1]; ++k) {
+        const int c = H_.innerIndexPtr()[k];  // column c has row `lead` (symmetric pattern)
+        rotation_slots_.push_back({r.eq_a >= 0 ? shell_slot(r.eq_a, c) : -1,
+                                   r.eq_b >= 0 ? shell_slot(r.eq_b, c) : -1, static_cast<int>(i)});
+      }
+    }
+  if (row_slots_.size() != rows_.size()) {
+    row_slots_.assign(rows_.size(), {});
+    for (std::size_t i = 0; i < rows_.size(); ++i)
+      for (int r = 0; r < 5; ++r)
+        for (int c = 0; c < 5; ++c)
+          row_slots_[i][5 * r + c] = rows_[i].eq[r] >= 0 && rows_[i].eq[c] >= 0
+                                         ? shell_slot(rows_[i].eq[r], rows_[i].eq[c])
+                                         : -1;
+  }
+  const double* jv = J_->valuePtr();
+  Eigen::VectorXd m(H_.nonZeros());
+  for (int k = 0; k < H_.nonZeros(); ++k) m[k] = jv[j_slot_[k]];
+  for (const RotationSlots& s : rotation_slots_) {  // the rows of T^T A
+    const Matrix2d& T = rotations_[s.block].T;
+    if (s.a >= 0 && s.b >= 0) {
+      const double a = m[s.a], b = m[s.b];
+      m[s.a] = T(0, 0) * a + T(1, 0) * b;
+      m[s.b] = T(0, 1) * a + T(1, 1) * b;
+    } else if (s.a >= 0) {
+      m[s.a] *= T(0, 0);
+    } else {
+      m[s.b] *= T(1, 1);
+    }
+  }
+  double* hv = H_.valuePtr();
+  for (int k = 0; k < H_.nonZeros(); ++k) hv[k] = 0.5 * (m[k] + m[mirror_[k]]);
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    const ContactJacobianRow& row = rows_[i];
+    if (row.b == 0.0) continue;
+    const double w = row.b / row.a;
+    for (int r = 0; r < 5; ++r)
+      for (int c = 0; c < 5; ++c)
+        if (row_slots_[i][5 * r + c] >= 0)
+          hv[row_slots_[i][5 * r + c]] += w * row.gradient[r] * row.gradient[c];
+  }
+  has_preconditioner_ = false;
+  try {
+    ++counters_.cholesky;
+    cholesky_->factorize(H_);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::kNumerical) throw;
+    return false;
+  }
+  pre_rows_ = rows_;
+  pre_rotations_ = rotations_;
+  has_preconditioner_ = true;
+  preconditioner_age_ = 0;
+  last_products_ = 0;
+  return true;
+}
+
+void ContactJacobianSolver::factor_fallback() {
+  if (!lu_) lu_ = make_linear_solver(fallback_);  // analyses J's pattern on first use
+  ++counters_.lu_fallbacks;
+  lu_->factorize(*J_);  // throws a numerical error if J is singular
+  use_lu_ = true;
+}
+
+void ContactJacobianSolver::factorize(const SparseMatrix& J, int num_shell,
+                                      const std::vector<ShellChart::RotationBlock>& rotations,
+                                      const std::vector<ContactJacobianRow>& rows) {
+  SI_REQUIRE(J.isCompressed() && J.rows() == J.cols() &&
+                 J.rows() == num_shell + static_cast<int>(rows.size()),
+             "contact Jacobian: size does not match the shell and contact rows");
+  if (num_shell != num_shell_) analyze_shell(J, num_shell);
+  const bool same_pattern =
+      static_cast<int>(analyzed_outer_.size()) == J.outerSize() + 1 &&
+      std::equal(analyzed_outer_.begin(), analyzed_outer_.end(), J.outerIndexPtr());
+  if (!same_pattern) map_jacobian(J);
+  J_ = &J;
+  rotations_ = rotations;
+  // Rotation components of each gradient onto the chart: G~ = T^T G.
+  std::vector<int> block_of(num_shell, -1);
+  for (std::size_t i = 0; i < rotations.size(); ++i) {
+    if (rotations[i].eq_a >= 0) block_of[rotations[i].eq_a] = static_cast<int>(i);
+    if (rotations[i].eq_b >= 0) block_of[rotations[i].eq_b] = static_cast<int>(i);
+  }
+  rows_ = rows;
+  for (ContactJacobianRow& row : rows_) {
+    row.a = std::max({row.a, kCondensationFloor * row.b / kappa_, 1e-300});
+    const int e = row.eq[3] >= 0 ? row.eq[3] : row.eq[4];
+    if (e < 0 || block_of[e] < 0) continue;
+    const Matrix2d& T = rotations[block_of[e]].T;
+    const double ga = row.gradient[3], gb = row.gradient[4];
+    row.gradient[3] = T(0, 0) * ga + T(1, 0) * gb;
+    row.gradient[4] = T(0, 1) * ga + T(1, 1) * gb;
+  }
+  // Rows the factor has not seen (candidates appended since it was made) enter the
+  // preconditioner uncondensed (b = 0): dlambda_i = r_i / a_i. A shorter set than the factor's
+  // is not an appended one: it needs a new factor.
+  if (has_preconditioner_ && pre_rows_.size() > rows_.size()) has_preconditioner_ = false;
+  for (std::size_t i = pre_rows_.size(); has_preconditioner_ && i < rows_.size(); ++i) {
+    pre_rows_.push_back(rows_[i]);
+    pre_rows_.back().b = 0.0;
+  }
+  use_lu_ = false;
+  ++preconditioner_age_;
+  const bool stale = !has_preconditioner_ || last_products_ > kRefreshProducts ||
+                     preconditioner_age_ > kMaxPreconditionerAge;
+  if (stale && !refresh_preconditioner()) factor_fallback();
+}
+
+void ContactJacobianSolver::forget_preconditioner() {
+  lu_.reset();  // UMFPACK's symbolic analysis reads the values of the matrix it was made from
+  has_preconditioner_ = false;
+  preconditioner_age_ = 0;
+  last_products_ = 0;
+  pre_rotations_.clear();
+  pre_rows_.clear();
+}
+
+void ContactJacobianSolver::apply_preconditioner(const Eigen::VectorXd& in,
+                                                 Eigen::VectorXd& out) const {
+  const int nf = num_shell_;
+  Eigen::VectorXd r = in.head(nf);
+  transpose_transform(pre_rotations_, r);
+  for (std::size_t i = 0; i < pre_rows_.size(); ++i) {
+    const ContactJacobianRow& row = pre_rows_[i];
+    const double s = in[nf + static_cast<int>(i)] / row.a;
+    for (int k = 0; k < 5; ++k)
+      if (row.eq[k] >= 0) r[row.eq[k]] += row.gradient[k] * s;
+  }
+  out.resize(in.size());
+  out.head(nf) = cholesky_->solve(r);
+  for (std::size_t i = 0; i < pre_rows_.size(); ++i) {
+    const ContactJacobianRow& row = pre_rows_[i];
+    double gy = 0.0;
+    for (int k = 0; k < 5; ++k)
+      if (row.eq[k] >= 0) gy += row.gradient[k] * out[row.eq[k]];
+    const int m = nf + static_cast<int>(i);
+    out[m] = (in[m] - row.b * gy) / row.a;
+  }
+}
+
+Eigen::VectorXd ContactJacobianSolver::solve(const Eigen::VectorXd& rhs) {
+  SI_REQUIRE(J_ != nullptr && rhs.size() == J_->rows(), "contact Jacobian: solve before factorize");
+  // GMRES with the current factor; a stale factor that does not converge is refreshed once,
+  // then the LU of J takes over for this linearisation.
+  for (int attempt = 0; attempt < 2 && !use_lu_; ++attempt) {
+    ++counters_.krylov_solves;
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(rhs.size());
+    const GmresResult r = gmres(
+        [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) { out = (*J_) * in; },
+        [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) { apply_preconditioner(in, out); },
+        rhs, x, gmres_);
+    counters_.krylov_products += r.iterations;
+    last_products_ = r.iterations;
+    if (r.converged && x.allFinite()) return x;
+    if (preconditioner_age_ == 0 || !refresh_preconditioner()) break;
+  }
+  if (!use_lu_) factor_fallback();
+  return lu_->solve(rhs);
+}
+
+}  // namespace si

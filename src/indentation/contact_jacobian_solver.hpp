@@ -1,0 +1,109 @@
+// Linear solves with the indentation problem's Jacobian (indentation_problem.hpp)
+//     J = [ A        -G  ]    A   = (K - sum_i lambda_i dG_i) T + D    (shell_chart.hpp)
+//         [ b G~^T   Da  ]    G~  = T^T G,  b_i = phi_b kappa,  Da = diag(phi_a)
+// by GMRES on J itself (exact), right-preconditioned with a Cholesky factorization of the
+// symmetric positive-definite matrix
+//     H = sym(T^T A) + sum_i (b_i / a_i) G~_i G~_i^T,    a_i = max(phi_a, eps b_i / kappa),
+// the shell block premultiplied by T^T (which makes it the chart Hessian up to the drilling
+// term D and the asymmetry of K, both proportional to the residual) with the complementarity
+// rows condensed onto it (from row i: dlambda_i = (r_i - b_i G~_i^T dx) / a_i). For a fully
+// active candidate (phi_a = 0) the condensation is a penalty of weight kappa / eps; GMRES removes
+// the difference. Why: CHOLMOD's supernodal Cholesky of the shell block is about twice as fast as
+// UMFPACK's LU of J, its solves three times (docs/performance.md), and its pattern never changes
+// with the candidate set. Where H is not positive definite (past a limit point) or GMRES does not
+// converge, the solve falls back to an LU of J (the `fallback` solver, UMFPACK by default).
+// Candidates appended to the set (same shell block) keep the factor: their rows enter the
+// preconditioner uncondensed until the next refresh.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "model/shell_chart.hpp"
+#include "solvers/gmres.hpp"
+#include "solvers/linear_solver.hpp"
+
+namespace si {
+
+// One complementarity row of J: the candidate's equations (its node's 3 translations and 2
+// rotations, -1 if prescribed), its gap gradient G_i on those dofs (spatial increments, before
+// the chart), and the derivatives of its NCP row: a = d phi / d lambda, b = kappa d phi / d(kappa
+// g).
+struct ContactJacobianRow {
+  std::array<int, 5> eq{-1, -1, -1, -1, -1};
+  std::array<double, 5> gradient{0, 0, 0, 0, 0};
+  double a = 1.0;
+  double b = 0.0;
+};
+
+struct ContactJacobianCounters {
+  long cholesky = 0;         // factorizations of H
+  long lu_fallbacks = 0;     // factorizations of J by the fallback LU
+  long krylov_solves = 0;    // GMRES solves
+  long krylov_products = 0;  // products with J in them
+};
+
+class ContactJacobianSolver {
+ public:
+  // kappa: the problem's stiffness scale (N/mm). fallback: an LU solver (linear_solver.hpp).
+  // relative_tolerance: GMRES stops at ||J y - b|| <= relative_tolerance ||b|| (in (0, 1)).
+  ContactJacobianSolver(double kappa, LinearSolverKind fallback, double relative_tolerance = 1e-12);
+  ~ContactJacobianSolver();
+
+  // J: the full Jacobian (num_shell shell rows/columns first, then one row/column per row of
+  // `rows`, in order), its pattern fixed until the next call. Throws a numerical si::Error if
+  // neither route can factor it (singular J).
+  void factorize(const SparseMatrix& J, int num_shell,
+                 const std::vector<ShellChart::RotationBlock>& rotations,
+                 const std::vector<ContactJacobianRow>& rows);
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
+
+  const ContactJacobianCounters& counters() const { return counters_; }
+
+  // Forgets the preconditioner and the fallback LU (the next factorize() makes fresh ones), as a
+  // new solver would have none: the solves that follow are those of a new solver, bit for bit.
+  void forget_preconditioner();
+
+ private:
+  struct RotationSlots {
+    int a = -1, b = -1;  // slots of (eq_a, c) and (eq_b, c) in H_ (-1: prescribed component)
+    int block = 0;       // index into the rotation blocks
+  };
+  void analyze_shell(const SparseMatrix& J, int num_shell);
+  void map_jacobian(const SparseMatrix& J);
+  bool refresh_preconditioner();
+  void apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
+  void factor_fallback();
+  // T^T v on the rotation pairs of v's first num_shell entries (in place).
+  static void transpose_transform(const std::vector<ShellChart::RotationBlock>& rotations,
+                                  Eigen::VectorXd& v);
+  int shell_slot(int row, int col) const;
+
+  double kappa_;
+  LinearSolverKind fallback_;
+  const SparseMatrix* J_ = nullptr;
+  int num_shell_ = -1;
+  // Shell block of J: pattern, the slot of each entry's transpose, its slots in J.
+  SparseMatrix H_;
+  std::vector<int> mirror_;
+  std::vector<int> j_slot_;
+  std::vector<int> analyzed_outer_;             // J's column starts when j_slot_ was made
+  std::vector<RotationSlots> rotation_slots_;   // per (rotation block, column of its rows)
+  std::vector<std::array<int, 25>> row_slots_;  // per contact row: its 5x5 block in H_
+  std::unique_ptr<LinearSolver> cholesky_;
+  std::unique_ptr<LinearSolver> lu_;
+  bool use_lu_ = false;  // this factorize() went to the fallback LU
+  // The current linearisation (T blocks, rows with G~ and the floored a) and the one the
+  // Cholesky factor was made from (the preconditioner is reused while GMRES converges fast).
+  std::vector<ShellChart::RotationBlock> rotations_, pre_rotations_;
+  std::vector<ContactJacobianRow> rows_, pre_rows_;
+  bool has_preconditioner_ = false;
+  int preconditioner_age_ = 0;  // factorize() calls since the Cholesky factor was made
+  int last_products_ = 0;       // GMRES products of the last solve
+  GmresSettings gmres_;
+  ContactJacobianCounters counters_;
+};
+
+}  // namespace si

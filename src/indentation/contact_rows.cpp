@@ -1,0 +1,228 @@
+#include "indentation/contact_rows.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "contact/travel_gap.hpp"
+
+namespace si {
+
+const LocalApproach ContactRows::kNoApproach{};
+
+ContactRows::ContactRows(const ContactRowsSetting& setting) : setting_(setting) {}
+
+void ContactRows::set_candidates(const std::vector<int>& nodes) {
+  candidates_ = nodes;
+  candidates_changed(false);
+}
+
+void ContactRows::add_pattern(Triplets& t) const {
+  const int alpha = approach_->alpha_index();
+  for (int i = 0; i < size(); ++i) {
+    const int n = candidates_[i], m = first() + i;
+    std::array<int, 5> eq{};
+    for (int l = 0; l < 5; ++l) eq[l] = shell().dofs().equation(DofMap::dof(n, l));
+    for (int r : eq) {
+      if (r < 0) continue;
+      t.emplace_back(r, m, 0.0);
+      t.emplace_back(m, r, 0.0);
+      for (int c : eq)
+        if (c >= 0) t.emplace_back(r, c, 0.0);
+    }
+    t.emplace_back(m, m, 0.0);
+    if (alpha >= 0) t.emplace_back(m, alpha, 0.0);
+  }
+}
+
+void ContactRows::locate(const SparseMatrix& J) {
+  const int alpha = approach_->alpha_index();
+  slots_.assign(candidates_.size(), {});
+  for (int i = 0; i < size(); ++i) {
+    Slots& s = slots_[i];
+    const int m = first() + i;
+    for (int l = 0; l < 5; ++l) s.eq[l] = shell().dofs().equation(DofMap::dof(candidates_[i], l));
+    for (int r = 0; r < 5; ++r) {
+      s.column[r] = s.eq[r] >= 0 ? value_slot(J, s.eq[r], m) : -1;
+      s.row[r] = s.eq[r] >= 0 ? value_slot(J, m, s.eq[r]) : -1;
+      for (int c = 0; c < 5; ++c)
+        s.block[5 * r + c] = s.eq[r] >= 0 && s.eq[c] >= 0 ? value_slot(J, s.eq[r], s.eq[c]) : -1;
+    }
+    s.diagonal = value_slot(J, m, m);
+    s.alpha_column = alpha >= 0 ? value_slot(J, m, alpha) : -1;
+  }
+}
+
+double ContactRows::face_depth(int node, const cont::Vector& z, double h) const {
+  return h - approach_->dent(node, z).u;
+}
+
+double ContactRows::contact_gap(int i, const TermPoint& p, double depth, double lambda) const {
+  return gap_value(i, p, depth) + approach_->layer(candidates_[i], lambda);
+}
+
+// The first-touch node's gap at the start is zero only to the travel's roundoff (s(p) is a
+// Newton solve, and the linearised gap recomputes its reference point), and a power law's start
+// is regular only at the Fischer-Burmeister kink (0, 0), where d_b > 0 puts the dent's rate into
+// the alpha column (local-indentation.md 3); on the lambda side (gap +1.8e-15 mm, measured on a
+// linear cap) d_b = 0 and the Jacobian is singular. So with a power law, a gap within roundoff
+// of zero takes the derivatives of the touch, phi(lambda, 0): the generalised Jacobian's element
+// at the kink a roundoff away. The value, and so the solution, is that of the computed gap.
+NcpValue ContactRows::complementarity(double lambda, double gap) const {
+  NcpValue phi = ncp(setting_.ncp, lambda, kappa() * gap);
+  if (approach_->regularizes_touch() && std::abs(gap) <= body().touch_roundoff()) {
+    const NcpValue touch = ncp(setting_.ncp, lambda, 0.0);
+    phi.d_a = touch.d_a;
+    phi.d_b = touch.d_b;
+  }
+  return phi;
+}
+
+double ContactRows::multiplier_diagonal(int i, const NcpValue& phi) const {
+  return phi.d_a + phi.d_b * kappa() * approach_->layer(candidates_[i], 1.0);
+}
+
+void ContactRows::add_multiplier_terms(int i, const NcpValue& phi, double dent_rate,
+                                       double* J) const {
+  const Slots& s = slots_[i];
+  J[s.diagonal] += multiplier_diagonal(i, phi);
+  if (s.alpha_column >= 0) J[s.alpha_column] += phi.d_b * kappa() * dent_rate;
+}
+
+void ContactRows::residual(const TermPoint& p, cont::Vector& F) {
+  for (int i = 0; i < size(); ++i) {
+    const double lambda = p.z[first() + i];
+    const double depth = face_depth(candidates_[i], p.z, p.h);
+    F[first() + i] = complementarity(lambda, contact_gap(i, p, depth, lambda)).value;
+  }
+}
+
+// Only the gaps depend on h, through g = s(p) - t0 - h.
+void ContactRows::residual_p(const TermPoint& p, cont::Vector& out) {
+  for (int i = 0; i < size(); ++i) {
+    const double lambda = p.z[first() + i];
+    const double depth = face_depth(candidates_[i], p.z, p.h);
+    if (!hits(i, p, depth)) continue;
+    const NcpValue phi = complementarity(lambda, contact_gap(i, p, depth, lambda));
+    out[first() + i] = -phi.d_b * kappa();
+  }
+}
+
+void ContactRows::signature(const TermPoint& p, std::vector<int>& out) const {
+  for (int i = 0; i < size(); ++i) {
+    const double lambda = p.z[first() + i];
+    const double depth = face_depth(candidates_[i], p.z, p.h);
+    out.push_back(lambda > kappa() * contact_gap(i, p, depth, lambda));
+  }
+}
+
+void ContactRows::active_gradients(const TermPoint& p, Triplets& out, int& next) const {
+  std::vector<int> active;
+  signature(p, active);
+  std::vector<std::pair<int, double>> entries;
+  for (int i = 0; i < size(); ++i) {
+    if (!active[i]) continue;
+    entries.clear();
+    gradient(i, p, entries);
+    for (const auto& [column, value] : entries) out.emplace_back(next, column, value);
+    ++next;
+  }
+}
+
+bool ContactRows::adapt(const TermPoint& p) {
+  const int nn = static_cast<int>(body().face_points().size());
+  std::vector<bool> is_candidate(nn, false);
+  for (int n : candidates_) is_candidate[n] = true;
+  // Every node not yet a candidate whose contact point is now within candidate_depth of the
+  // indenter (measured as travel along its path): the set follows the deformed shell.
+  const double t0 = body().first_touch();
+  std::set<int> added;
+  for (int n = 0; n < nn; ++n) {
+    if (is_candidate[n]) continue;
+    const double depth = face_depth(n, p.z, p.h);
+    const NodeContactGeometry& g0 = body().geometry(n);
+    const Vector3d x = g0.X + p.states[n].u + g0.offset * p.states[n].d;
+    const TravelGap g = travel_gap(body().indenter(), body().direction(), x, t0 + depth, false);
+    if (g.hits && g.travel - t0 - depth <= setting_.candidate_depth) added.insert(n);
+  }
+  if (added.empty()) return false;
+  candidates_.insert(candidates_.end(), added.begin(), added.end());
+  candidates_changed(true);
+  return true;
+}
+
+void ContactRows::quantities(const TermPoint& p, IndentationState& out) const {
+  const ShellModel& model = shell().model();
+  const double sym = model.symmetry_factor;
+  const Vector3d& e = body().direction();
+  const double lambda_max = multipliers(p.z).cwiseAbs().maxCoeff();
+  const Vector3d axis_point = model.mesh.nodes[model.apex_node()];
+  out.force = 0;
+  for (int i = 0; i < size(); ++i) {
+    const int n = candidates_[i];
+    const double lambda = p.z[first() + i];
+    out.force += lambda;
+    if (lambda > 1e-9 * lambda_max && lambda > 0) {
+      ++out.contact_nodes;
+      out.contact_area += sym * shell().tributary_area(n);
+      const Vector3d x = model.mesh.nodes[n] + p.states[n].u - axis_point;
+      out.contact_radius = std::max(out.contact_radius, (x - x.dot(e) * e).norm());
+    }
+  }
+  out.force *= sym;
+}
+
+void ContactRows::outputs(const TermPoint& p, IndentationState& out) const {
+  // Curvature extremes over the nodes in contact (as contact_nodes counts them).
+  const cont::Vector lambda = multipliers(p.z);
+  const double lambda_max = lambda.size() ? lambda.cwiseAbs().maxCoeff() : 0.0;
+  bool any = false;
+  for (int i = 0; i < size(); ++i) {
+    const double l = lambda[i];
+    if (!(l > 1e-9 * lambda_max && l > 0)) continue;
+    const Vector3d k = shell().curvature(p.states, candidates_[i]);
+    out.contact_curvature_min = any ? out.contact_curvature_min.cwiseMin(k) : k;
+    out.contact_curvature_max = any ? out.contact_curvature_max.cwiseMax(k) : k;
+    any = true;
+  }
+  if (any && shell().model().symmetry_factor > 1) {
+    const double k12 =
+        std::max(std::abs(out.contact_curvature_min[1]), std::abs(out.contact_curvature_max[1]));
+    out.contact_curvature_min[1] = -k12;
+    out.contact_curvature_max[1] = k12;
+  }
+  // Per candidate: multiplier, gap to the (locally flattened) face, pressure; KKT residuals.
+  out.min_gap = std::numeric_limits<double>::infinity();
+  out.min_multiplier = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < size(); ++i) {
+    const int n = candidates_[i];
+    const double l = p.z[first() + i];
+    const double depth = face_depth(n, p.z, p.h);
+    const bool on_path = hits(i, p, depth);
+    const double g = contact_gap(i, p, depth, l);
+    out.nodes.push_back(n);
+    out.multipliers.push_back(l);
+    out.gaps.push_back(on_path ? g : std::numeric_limits<double>::infinity());
+    out.pressures.push_back(l / pressure_area(i));
+    out.min_multiplier = std::min(out.min_multiplier, l);
+    if (on_path) {
+      out.min_gap = std::min(out.min_gap, g);
+      out.max_complementarity = std::max(out.max_complementarity, std::abs(l * g));
+    }
+  }
+}
+
+Eigen::VectorXd ContactRows::reference_gaps(const TermPoint& reference) const {
+  Eigen::VectorXd g0(candidates_.size());
+  for (int i = 0; i < size(); ++i) g0[i] = gap_value(i, reference, 0.0);
+  return g0;
+}
+
+Eigen::VectorXd ContactRows::layer_compliances() const {
+  Eigen::VectorXd c(candidates_.size());
+  for (int i = 0; i < size(); ++i) c[i] = approach_->layer(candidates_[i], 1.0);
+  return c;
+}
+
+}  // namespace si

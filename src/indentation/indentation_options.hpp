@@ -1,0 +1,44 @@
+// The choices of an indentation problem (indentation_problem.hpp); the runs fill them from the
+// case's contact and path (analysis/indentation_run.cpp).
+#pragma once
+
+#include <vector>
+
+#include "contact/local_contact_law.hpp"
+#include "contact/ncp_function.hpp"
+#include "indentation/indentation_state.hpp"
+#include "indentation/interpolated_contact.hpp"
+#include "indentation/jacobian_solver.hpp"
+
+namespace si {
+
+struct IndentationOptions {
+  double contact_offset = 0;    // c: contact face above the reference surface along d, mm
+  double candidate_depth = 12;  // mm of travel past first touch (contact_rows.hpp)
+  // Fischer-Burmeister on the feasible quadrant, min outside (ncp_function.hpp); kMin for the
+  // active-set cross-check.
+  NcpFunction ncp = NcpFunction::kFischerBurmeisterMin;
+  // The interpolated traction's rows span several nodes and a power-law local contact adds
+  // the unknown alpha: those use the direct LU (UMFPACK unless klu is asked for).
+  JacobianSolverKind linear_solver = JacobianSolverKind::kPreconditionedKrylov;
+  // kPreconditionedKrylov: GMRES stops at a relative residual of krylov_tolerance. The Newton
+  // corrections need no more than 1e-6: an inexact Newton method with a constant forcing term
+  // (Dembo, Eisenstat & Steihaug 1982, SIAM J. Numer. Anal. 19:400-408) has
+  // ||F_k+1|| <= eta ||F_k|| + O(||F_k||^2), and eta = 1e-6 is far below the contraction Newton
+  // reaches within the corrector's tolerance: the iteration counts are those of exact solves
+  // (measured identical on the 1e4-unknown cap over 0-10 mm) at 2.5 instead of 3.9 products per
+  // solve. Convergence is judged on the residual, so eta does not limit the solution's accuracy;
+  // the tangents and the bordered solves of the continuation carry errors of order eta.
+  double krylov_tolerance = 1e-6;
+  int threads = 0;  // element assembly (0 = OpenMP default)
+  // The paper's option (contact.traction: interpolated), linear kinematics only: weighted gaps
+  // with the interpolated traction (weighted_gaps.hpp) instead of nodal gaps (nodal_gaps.hpp).
+  bool interpolated_traction = false;
+  InterpolatedContactOptions interpolated;
+  LocalContactLaw local;  // local contact in series (none by default)
+  // What the continuation monitors (Problem::monitor_names), in order; none by default (the
+  // runs pass the monitor columns of analysis/path_columns.hpp).
+  std::vector<StateMonitor> monitors;
+};
+
+}  // namespace si

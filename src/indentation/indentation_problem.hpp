@@ -1,0 +1,140 @@
+// The indentation problem as a continuation problem in the depth h (continuation/problem.hpp):
+// a rigid indenter moves along its direction of travel e by t0 + h, t0 its first touch of the
+// shell's contact face, and presses the shell frictionlessly (paper eqs 20-23, 72-80; P6, P7).
+//
+// A composition of parts, each in its own file:
+//  * the shell (shell_part.hpp): unknowns x, its chart coordinates, and the equilibrium rows
+//    r(x) - (the contact forces) = 0 with their Jacobian K (T + D); the kinematics live there;
+//  * the indenter as a contact body (contact_body.hpp): its first touch and reach;
+//  * contact terms (contact_term.hpp), each with its unknowns and rows: the complementarity rows
+//    of the indenter's contact, with nodal gaps (nodal_gaps.hpp) or the paper's weighted gaps
+//    and interpolated traction (weighted_gaps.hpp), and a local law: a power law's approach alpha
+//    (power_law_approach.hpp) or a thin layer (thin_layer.hpp). contact_terms.cpp chooses them;
+//  * the Jacobian's solver, chosen once (jacobian_solver.hpp).
+// Unknowns z = [x ; the terms' unknowns, in order] (today [x ; lambda ; alpha]); the Jacobian is
+// exact (generalised, at the kinks of the NCP function):
+//     [ K - sum lambda_i dG_i    -G ]      then, for nonlinear kinematics, the chart transform
+//     [ phi_b kappa G^T        phi_a ]      K T + D of shell_chart.hpp on the shell columns,
+// with kappa a stiffness scale (the apex's translational stiffness along e, N/mm) that makes
+// lambda and kappa g comparable. Linear kinematics: K, G and the gap are those of the reference
+// state, so the only nonlinearity is phi; this is the paper's linear setting.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/indenter.hpp"
+#include "continuation/problem.hpp"
+#include "indentation/contact_body.hpp"
+#include "indentation/contact_terms.hpp"
+#include "indentation/indentation_options.hpp"
+#include "indentation/jacobian_solver.hpp"
+#include "indentation/shell_part.hpp"
+
+namespace si {
+
+// Where each kind of unknown sits in z = [x ; lambda ; alpha].
+struct UnknownLayout {
+  int shell = 0;        // x: z[0, shell)
+  int multipliers = 0;  // lambda: z[shell, shell + multipliers)
+  int local = 0;        // alpha: 1 with a power-law local contact, else 0
+  int lambda_begin() const { return shell; }
+  int alpha_index() const { return shell + multipliers; }
+  int size() const { return shell + multipliers + local; }
+};
+
+class IndentationProblem : public cont::Problem {
+ public:
+  // Keeps references to model and indenter. `direction` is the indenter's unit direction of
+  // travel. Throws an input error if the indenter cannot reach the shell or starts inside it.
+  IndentationProblem(const ShellModel& model, const Indenter& indenter, const Vector3d& direction,
+                     IndentationOptions options);
+  ~IndentationProblem() override;
+
+  int size() const override;
+  UnknownLayout layout() const;
+  bool residual(const cont::Vector& z, double h, cont::Vector& F) override;
+  bool factorize(const cont::Vector& z, double h) override;
+  bool solve(cont::Vector& b) override;
+  bool residual_p(const cont::Vector& z, double h, cont::Vector& out) override;
+  // Arclength metric: mean square of the shell coordinates (mm, rad; alpha counts as one more)
+  // plus the mean square of the multipliers over kappa (mm), so that with parameter weight 1 an
+  // arclength step is about a depth step (each shell point moves at most as much as the indenter).
+  double inner(const cont::Vector& a, const cont::Vector& b) const override;
+  std::vector<std::string> monitor_names() const override;
+  // The monitors need no assembly (the continuation evaluates them off the branch too).
+  cont::Vector monitors(const cont::Vector& z, double h) override;
+  std::vector<int> signature(const cont::Vector& z, double h) override;
+  bool adapt(cont::Vector& z, double h) override;
+  // Drops what one solve hands the next (the Jacobian solver's reused preconditioner or LU, the
+  // terms' Newton guesses, the evaluate() cache): a resumed run, which starts without them, then
+  // goes on bit for bit as the uninterrupted one.
+  void reset_solver_caches() override;
+  // The gradients of the active contact constraints with respect to the shell's free dofs (one
+  // row per active constraint; spatial increments, before the chart transform), for the tangent
+  // restricted to them.
+  SparseMatrix active_constraint_gradients(const cont::Vector& z, double h) const;
+
+  // The starting point: undeformed, no contact force (a solution at h = 0).
+  cont::Vector initial_point() const;
+  double first_touch() const { return body_.first_touch(); }
+  double stiffness_scale() const { return kappa_; }
+  const std::vector<int>& candidates() const { return contact_->candidates(); }
+  // Replaces the candidate set (resuming a run whose set had grown): mesh node indices.
+  void restore_candidates(const std::vector<int>& nodes);
+  int num_shell_unknowns() const { return shell_.size(); }
+  int num_local_unknowns() const { return layout().local; }
+  const LocalContactLaw& local_law() const { return options_.local; }
+  // The whole-shell force scale for tolerances: max(T_N, kappa * 1 mm * 1e-3) at z.
+  double force_scale(const cont::Vector& z) const;
+
+  std::vector<NodeState> node_states(const cont::Vector& z) const;
+
+  // Linear kinematics only (the fast path, linear_indentation.hpp): the reference tangent K
+  // (free dofs), the candidates' gap gradients C (one row per candidate, free-dof columns) and
+  // the gaps at h = 0 of the undeformed shell, g0 (mm); then g = g0 - h + C x. With the
+  // interpolated traction these are the weighted gaps over their weights (weighted_gaps.hpp).
+  const SparseMatrix& linear_tangent() const { return shell_.reference_tangent(); }
+  SparseMatrix contact_matrix() const;
+  Eigen::VectorXd reference_gaps() const;
+  // Thin-layer local law: each candidate's local compliance c_L / A_i, mm/N (zeros otherwise);
+  // the fast path adds it to the diagonal of the Schur complement. A power-law local law is
+  // nonlinear: the fast path refuses it (run_indentation_path routes it to the continuation).
+  Eigen::VectorXd layer_compliances() const;
+  IndentationState evaluate(const cont::Vector& z, double h);
+  const ShellModel& model() const { return model_; }
+  IndentationCounters counters() const;
+  // The preconditioned Krylov solver's work (zero with a direct LU).
+  ContactJacobianCounters solver_counters() const { return solver_->counters(); }
+  const DofMap& dofs() const { return shell_.dofs(); }
+  const Assembler& assembler() const { return shell_.assembler(); }
+
+ private:
+  // The terms placed after the shell in z, and the Jacobian's pattern and slots built anew.
+  void lay_out();
+  void build_pattern();
+  // r_free = r(x) - the terms' forces; returns the node states at z.
+  const std::vector<NodeState>& shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
+  // The quantities of the monitors (no gaps, no assembly).
+  void quantities(const cont::Vector& z, const std::vector<NodeState>& s, double h,
+                  IndentationState& out) const;
+
+  const ShellModel& model_;
+  IndentationOptions options_;
+  ShellPart shell_;
+  ContactBody body_;
+  double kappa_ = 1;  // N/mm
+  ContactParts parts_;
+  ContactRows* contact_ = nullptr;  // the indenter's contact rows (in parts_)
+  std::unique_ptr<JacobianSolver> solver_;
+  SparseMatrix jacobian_;
+  std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
+  IndentationCounters counters_;
+  // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.
+  cont::Vector cached_z_;
+  double cached_h_ = 0;
+  std::unique_ptr<IndentationState> cached_state_;
+};
+
+}  // namespace si

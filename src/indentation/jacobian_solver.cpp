@@ -1,0 +1,53 @@
+#include "indentation/jacobian_solver.hpp"
+
+namespace si {
+namespace {
+
+// A sparse LU of the whole Jacobian, made anew (pattern analysed) after a pattern change.
+class DirectJacobianSolver final : public JacobianSolver {
+ public:
+  explicit DirectJacobianSolver(LinearSolverKind kind) : kind_(kind) { pattern_changed(); }
+  bool wants_condensed_rows() const override { return false; }
+  void pattern_changed() override { lu_ = make_linear_solver(kind_); }
+  void reset() override { pattern_changed(); }
+  void factorize(const SparseMatrix& J, int, const std::vector<ShellChart::RotationBlock>&,
+                 const std::vector<ContactJacobianRow>&) override {
+    lu_->factorize(J);  // the first factorization analyses the pattern
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override { return lu_->solve(rhs); }
+
+ private:
+  LinearSolverKind kind_;
+  std::unique_ptr<LinearSolver> lu_;
+};
+
+// The preconditioned Krylov solver; its factor survives pattern changes (appended rows).
+class KrylovJacobianSolver final : public JacobianSolver {
+ public:
+  KrylovJacobianSolver(double kappa, double tolerance)
+      : solver_(kappa, LinearSolverKind::kUmfpack, tolerance) {}
+  bool wants_condensed_rows() const override { return true; }
+  void reset() override { solver_.forget_preconditioner(); }
+  void factorize(const SparseMatrix& J, int num_shell,
+                 const std::vector<ShellChart::RotationBlock>& rotations,
+                 const std::vector<ContactJacobianRow>& rows) override {
+    solver_.factorize(J, num_shell, rotations, rows);
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override { return solver_.solve(rhs); }
+  ContactJacobianCounters counters() const override { return solver_.counters(); }
+
+ private:
+  ContactJacobianSolver solver_;
+};
+
+}  // namespace
+
+std::unique_ptr<JacobianSolver> make_jacobian_solver(JacobianSolverKind kind, bool condensable,
+                                                     double kappa, double krylov_tolerance) {
+  if (kind == JacobianSolverKind::kPreconditionedKrylov && condensable)
+    return std::make_unique<KrylovJacobianSolver>(kappa, krylov_tolerance);
+  return std::make_unique<DirectJacobianSolver>(
+      kind == JacobianSolverKind::kKlu ? LinearSolverKind::kKlu : LinearSolverKind::kUmfpack);
+}
+
+}  // namespace si

@@ -1,0 +1,48 @@
+// The linear solver of the indentation problem's Jacobian, chosen once per problem: GMRES
+// preconditioned by a Cholesky factorization of the condensed shell block
+// (contact_jacobian_solver.hpp), which needs every contact row condensable (rows on one node's
+// dofs: the nodal gaps, with or without a thin layer), or a direct sparse LU of the whole
+// Jacobian (unsymmetric: UMFPACK or KLU), which takes anything (weighted gaps, a power law's
+// alpha).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/sparse.hpp"
+#include "indentation/contact_jacobian_solver.hpp"
+#include "model/shell_chart.hpp"
+#include "solvers/linear_solver.hpp"
+
+namespace si {
+
+// kPreconditionedKrylov falls back to UMFPACK for problems whose rows do not condense.
+enum class JacobianSolverKind { kPreconditionedKrylov, kUmfpack, kKlu };
+
+class JacobianSolver {
+ public:
+  virtual ~JacobianSolver() = default;
+  // Whether factorize() wants the condensed rows (ContactTerm::add_jacobian).
+  virtual bool wants_condensed_rows() const = 0;
+  // The Jacobian's pattern changed (candidates added): a direct solver analyses it anew.
+  virtual void pattern_changed() {}
+  // Forgets what one factorization hands the next (a reused preconditioner, an LU's symbolic
+  // analysis, which UMFPACK makes from the values it first sees): the solves that follow are a
+  // new solver's, bit for bit (cont::Problem::reset_solver_caches).
+  virtual void reset() = 0;
+  // J: the num_shell shell rows and columns first, then the terms' (in `rows` for a Krylov
+  // solver). Throws a numerical si::Error if J cannot be factored.
+  virtual void factorize(const SparseMatrix& J, int num_shell,
+                         const std::vector<ShellChart::RotationBlock>& rotations,
+                         const std::vector<ContactJacobianRow>& rows) = 0;
+  virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) = 0;
+  // The Krylov solver's work (zero for a direct LU).
+  virtual ContactJacobianCounters counters() const { return {}; }
+};
+
+// condensable: whether every part of the problem has condensable rows. kappa: the problem's
+// stiffness scale (N/mm); krylov_tolerance: GMRES's relative residual.
+std::unique_ptr<JacobianSolver> make_jacobian_solver(JacobianSolverKind kind, bool condensable,
+                                                     double kappa, double krylov_tolerance);
+
+}  // namespace si

@@ -1,0 +1,138 @@
+#include "indentation/linear_indentation.hpp"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <limits>
+
+#include "core/error.hpp"
+
+namespace si {
+
+LinearIndentation::LinearIndentation(const IndentationProblem& problem)
+    : problem_(problem), solver_(make_linear_solver(LinearSolverKind::kCholmod)) {
+  SI_REQUIRE(problem.model().kinematics == Kinematics::kLinear,
+             "the linear fast path needs linear kinematics");
+  SI_REQUIRE(problem.num_local_unknowns() == 0,
+             "the linear fast path cannot carry a power-law local contact (it is nonlinear)");
+  const SparseMatrix& K = problem.linear_tangent();
+  solver_->analyze(K);
+  solver_->factorize(K);
+  C_ = problem.contact_matrix();
+  g0_ = problem.reference_gaps();
+  const int nc = static_cast<int>(C_.rows());
+  S_.resize(nc, nc);
+  const SparseMatrix Ct = C_.transpose();
+  for (int j = 0; j < nc; ++j) {
+    const Eigen::VectorXd y = solver_->solve(Eigen::VectorXd(Ct.col(j)));
+    S_.col(j) = C_ * y;
+  }
+  S_ = 0.5 * (S_ + S_.transpose()).eval();  // exact symmetry for the dense Cholesky
+  // Thin-layer local law (vam): each gap gains c_L++ lambda_i / A_i.
+  S_.diagonal() += problem.layer_compliances();
+  lambda_ = Eigen::VectorXd::Zero(nc);
+}
+
+LinearIndentation::~LinearIndentation() = default;
+
+namespace {
+
+// lambda on the set `free` (others zero) minimising the QP there: S_FF lambda_F = -q_F.
+Eigen::VectorXd minimiser_on(const Eigen::MatrixXd& S, const Eigen::VectorXd& q,
+                             const std::vector<int>& free) {
+  const int m = static_cast<int>(free.size());
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(q.size());
+  if (m == 0) return lambda;
+  Eigen::MatrixXd Sff(m, m);
+  Eigen::VectorXd qf(m);
+  for (int a = 0; a < m; ++a) {
+    qf[a] = q[free[a]];
+    for (int b = 0; b < m; ++b) Sff(a, b) = S(free[a], free[b]);
+  }
+  const Eigen::VectorXd sol = Sff.llt().solve(-qf);
+  for (int a = 0; a < m; ++a) lambda[free[a]] = sol[a];
+  return lambda;
+}
+
+}  // namespace
+
+// The primal-dual active-set method (Hintermueller, Ito & Kunisch 2002) from the warm start:
+// usually two or three dense solves per depth, as all contact changes are taken at once. It
+// can cycle on matrices that are not M-matrices; then the primal active-set method below, which
+// terminates finitely, takes over from the same warm start.
+bool LinearIndentation::solve_pdas(const Eigen::VectorXd& q, double tol, Eigen::VectorXd& lambda) {
+  const int nc = static_cast<int>(q.size());
+  Eigen::VectorXd w = q + S_ * lambda_;
+  std::vector<int> set;
+  for (int i = 0; i < nc; ++i)
+    if (lambda_[i] > w[i]) set.push_back(i);
+  for (int k = 0; k < 20; ++k) {
+    ++iterations_;
+    lambda = minimiser_on(S_, q, set);
+    w = q + S_ * lambda;
+    std::vector<int> next;
+    for (int i = 0; i < nc; ++i)
+      if (lambda[i] > w[i]) next.push_back(i);
+    if (next == set)
+      return lambda.minCoeff() >= -tol * (1 + lambda.cwiseAbs().maxCoeff()) &&
+             (w.array() >= -tol).all();
+    set = next;
+  }
+  return false;
+}
+
+cont::Vector LinearIndentation::solve(double h) {
+  const int nc = static_cast<int>(S_.rows());
+  const Eigen::VectorXd q = g0_ - Eigen::VectorXd::Constant(nc, h);
+  // Optimality tolerance on w: roundoff of S lambda, relative to the gap scale.
+  const double tol = 1e-13 * std::max(1.0, q.cwiseAbs().maxCoeff());
+  iterations_ = 0;
+  Eigen::VectorXd lambda;
+  if (!solve_pdas(q, tol, lambda)) solve_primal(q, tol, lambda);
+  lambda = lambda.cwiseMax(0.0);
+  lambda_ = lambda;
+  const Eigen::VectorXd x = solver_->solve(C_.transpose() * lambda);
+  cont::Vector z(x.size() + nc);
+  z << x, lambda;
+  return z;
+}
+
+// The primal active-set method for the convex QP (Nocedal & Wright 2006, Alg. 16.3).
+void LinearIndentation::solve_primal(const Eigen::VectorXd& q, double tol,
+                                     Eigen::VectorXd& lambda) {
+  const int nc = static_cast<int>(q.size());
+  lambda = lambda_;
+  std::vector<int> free;  // the working set's complement: indices where lambda may be > 0
+  for (int i = 0; i < nc; ++i)
+    if (lambda[i] > 0) free.push_back(i);
+  const int max_iterations = 10 * nc + 10;
+  for (int k = 0;; ++k, ++iterations_) {
+    if (k > max_iterations)
+      throw_numerical("linear contact: the active-set method did not terminate");
+    const Eigen::VectorXd target = minimiser_on(S_, q, free);
+    // Blocked by a bound: step to the first multiplier reaching zero and drop it.
+    double alpha = 1.0;
+    int blocking = -1;
+    for (int i : free)
+      if (target[i] < 0 && lambda[i] - target[i] > 0) {
+        const double a = lambda[i] / (lambda[i] - target[i]);
+        if (a < alpha) alpha = a, blocking = i;
+      }
+    lambda += alpha * (target - lambda);
+    if (blocking >= 0) {
+      lambda[blocking] = 0;
+      free.erase(std::find(free.begin(), free.end(), blocking));
+      continue;
+    }
+    // Optimal on this set: free the most violated gap, if any.
+    const Eigen::VectorXd w = q + S_ * lambda;
+    int entering = -1;
+    double most = -tol;
+    for (int i = 0; i < nc; ++i)
+      if (lambda[i] == 0 && w[i] < most && std::find(free.begin(), free.end(), i) == free.end())
+        most = w[i], entering = i;
+    if (entering < 0) return;
+    free.push_back(entering);
+  }
+}
+
+}  // namespace si

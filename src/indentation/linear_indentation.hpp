@@ -1,0 +1,42 @@
+// The linear fast path (paper eqs 77-80): with linear kinematics and the linearised gap
+// g = g0 - h + C x (indentation_problem.hpp), K is factored once and the contact problem at each
+// depth condenses onto the candidates (the Schur complement; the paper's K_mod = -S):
+//     lambda >= 0,   w = g0 - h + S lambda >= 0,   lambda . w = 0,   S = C K^-1 C^T,
+// an LCP with S symmetric positive definite, i.e. the convex QP
+//     min 1/2 lambda^T S lambda + (g0 - h)^T lambda   subject to lambda >= 0.
+// It is solved by the primal-dual active-set method warm-started from the previous depth (all
+// contact changes at once, a few dense solves), with the primal active-set method (Nocedal &
+// Wright 2006, Alg. 16.3), which terminates finitely, as the fall-back; then x = K^-1 C^T lambda.
+// S costs one solve per candidate, once; each depth costs a few small dense Cholesky solves and
+// one sparse back-substitution.
+#pragma once
+
+#include <memory>
+
+#include "indentation/indentation_problem.hpp"
+
+namespace si {
+
+class LinearIndentation {
+ public:
+  // The problem must have linear kinematics; it is kept by reference.
+  explicit LinearIndentation(const IndentationProblem& problem);
+  ~LinearIndentation();
+
+  // The problem's unknowns z = [x ; lambda] at depth h.
+  cont::Vector solve(double h);
+  int last_iterations() const { return iterations_; }  // dense solves at the last depth
+
+ private:
+  bool solve_pdas(const Eigen::VectorXd& q, double tol, Eigen::VectorXd& lambda);
+  void solve_primal(const Eigen::VectorXd& q, double tol, Eigen::VectorXd& lambda);
+  const IndentationProblem& problem_;
+  std::unique_ptr<LinearSolver> solver_;
+  SparseMatrix C_;
+  Eigen::MatrixXd S_;
+  Eigen::VectorXd g0_;
+  Eigen::VectorXd lambda_;  // warm start
+  int iterations_ = 0;
+};
+
+}  // namespace si

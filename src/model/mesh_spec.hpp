@@ -1,0 +1,28 @@
+// How the shell is meshed (docs/case-file.md `mesh`; shell_model.hpp builds it).
+#pragma once
+
+#include <string>
+
+#include "model/symmetry.hpp"
+#include "shell/shell_element.hpp"
+
+namespace si {
+
+// Mesh size grades from size_apex at the indentation point to size_edge beyond refine_radius.
+struct MeshSpec {
+  ElementType element = ElementType::kMitc4;
+  double size_apex = 0.5;       // mm
+  double size_edge = 2.0;       // mm
+  double refine_radius = 13.0;  // mm, measured from the indentation point in plan
+  Symmetry symmetry = Symmetry::kFull;
+  // Rectangular plates and cylindrical panels: graded like the cap (size_apex within
+  // refine_radius, growing to size_edge) instead of uniform at size_apex.
+  bool graded = false;
+  // A mesh from a Gmsh file (path resolved against the case file's directory; empty: the
+  // built-in mesh of `shell`), with the reader's options (model/gmsh_reader.hpp).
+  std::string file;
+  bool reorient = false;
+  bool flip = false;
+};
+
+}  // namespace si

@@ -1,0 +1,31 @@
+#include "solvers/linear_solver.hpp"
+
+#include <sstream>
+
+#include "core/error.hpp"
+#include "solvers/cholmod_solver.hpp"
+#include "solvers/klu_solver.hpp"
+#include "solvers/umfpack_solver.hpp"
+
+namespace si {
+
+std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind) {
+  switch (kind) {
+    case LinearSolverKind::kCholmod:
+      return std::make_unique<CholmodSolver>();
+    case LinearSolverKind::kUmfpack:
+      return std::make_unique<UmfpackSolver>();
+    case LinearSolverKind::kKlu:
+      return std::make_unique<KluSolver>();
+  }
+  throw Error(ErrorKind::kInternal, "make_linear_solver: unknown solver kind");
+}
+
+std::string singular_matrix_message(const std::string& solver, double rcond) {
+  std::ostringstream os;
+  os << "stiffness matrix is singular (" << solver << ", pivot ratio " << rcond
+     << "): the model may be insufficiently supported (free rigid-body motion)";
+  return os.str();
+}
+
+}  // namespace si

@@ -1,0 +1,178 @@
+// The preconditioned Krylov solver of the indentation Jacobian against a dense LU of the same
+// matrix (a different method), on a small synthetic Jacobian with the structure of
+// contact_jacobian_solver.hpp: a chart-transformed SPD shell block, an exactly active, a partly
+// active and an inactive complementarity row, a node with both rotation components free and one
+// with one prescribed.
+#include "indentation/contact_jacobian_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "core/error.hpp"
+
+namespace si {
+namespace {
+
+constexpr int kShell = 12;  // node 0: eqs 0-4 (rotations 3, 4); node 1: 5-8 (rotation 8); 9-11
+constexpr double kKappa = 50.0;
+
+struct Synthetic {
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(kShell, kShell);  // symmetric
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(kShell, kShell);  // drilling-like, unsymmetric
+  std::vector<ShellChart::RotationBlock> rotations;
+  std::vector<ContactJacobianRow> rows;
+
+  Eigen::MatrixXd full_T() const {
+    Eigen::MatrixXd T = Eigen::MatrixXd::Identity(kShell, kShell);
+    for (const ShellChart::RotationBlock& r : rotations) {
+      if (r.eq_a >= 0) T(r.eq_a, r.eq_a) = r.T(0, 0);
+      if (r.eq_b >= 0) T(r.eq_b, r.eq_b) = r.T(1, 1);
+      if (r.eq_a >= 0 && r.eq_b >= 0) {
+        T(r.eq_a, r.eq_b) = r.T(0, 1);
+        T(r.eq_b, r.eq_a) = r.T(1, 0);
+      }
+    }
+    return T;
+  }
+
+  // J = [K T + D, -G; b G^T T, diag(a)] (indentation_problem.hpp).
+  SparseMatrix jacobian() const {
+    const int n = kShell + static_cast<int>(rows.size());
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
+    const Eigen::MatrixXd T = full_T();
+    J.topLeftCorner(kShell, kShell) = K * T + D;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const int m = kShell + static_cast<int>(i);
+      Eigen::VectorXd G = Eigen::VectorXd::Zero(kShell);
+      for (int k = 0; k < 5; ++k)
+        if (rows[i].eq[k] >= 0) G[rows[i].eq[k]] = rows[i].gradient[k];
+      J.block(0, m, kShell, 1) = -G;
+      J.block(m, 0, 1, kShell) = rows[i].b * (T.transpose() * G).transpose();
+      J(m, m) = rows[i].a;
+    }
+    return J.sparseView();
+  }
+};
+
+Synthetic make_synthetic(double shell_sign = 1.0) {
+  Synthetic s;
+  std::srand(11);
+  const Eigen::MatrixXd R = Eigen::MatrixXd::Random(kShell, kShell);
+  s.K = shell_sign * (R * R.transpose() + kShell * Eigen::MatrixXd::Identity(kShell, kShell));
+  ShellChart::RotationBlock both;
+  both.eq_a = 3;
+  both.eq_b = 4;
+  both.T << 0.98, 0.07, -0.05, 1.01;
+  ShellChart::RotationBlock one;
+  one.eq_a = 8;
+  one.T << 0.97, 0.0, 0.0, 1.0;
+  s.rotations = {both, one};
+  const auto row = [](std::array<int, 5> eq, double a, double b) {
+    ContactJacobianRow r;
+    r.eq = eq;
+    for (int k = 0; k < 5; ++k) r.gradient[k] = 0.3 * k - 0.5 + 0.1 * eq[0];
+    r.a = a;
+    r.b = b;
+    return r;
+  };
+  s.rows = {row({0, 1, 2, 3, 4}, 0.0, 1.2 * kKappa),   // fully active: phi_a = 0
+            row({5, 6, 7, 8, -1}, 0.4, 0.7 * kKappa),  // partly active
+            row({0, 1, 2, 3, 4}, 1.0, 0.0)};           // inactive
+  return s;
+}
+
+void expect_matches_dense_lu(ContactJacobianSolver& solver, const SparseMatrix& J) {
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(J.rows(), -2.0, 1.0);
+  const Eigen::VectorXd reference = Eigen::MatrixXd(J).partialPivLu().solve(b);
+  const Eigen::VectorXd x = solver.solve(b);
+  EXPECT_LT((x - reference).norm(), 1e-10 * reference.norm());
+}
+
+// T^T (K T) is symmetric: the preconditioner is exact up to the condensation floor, so GMRES
+// needs at most two products.
+TEST(ContactJacobianSolver, ExactStructureSolvesInTwoProducts) {
+  const Synthetic s = make_synthetic();
+  const SparseMatrix J = s.jacobian();
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
+  solver.factorize(J, kShell, s.rotations, s.rows);
+  expect_matches_dense_lu(solver, J);
+  EXPECT_EQ(solver.counters().cholesky, 1);
+  EXPECT_EQ(solver.counters().lu_fallbacks, 0);
+  EXPECT_LE(solver.counters().krylov_products, 2);
+}
+
+// A drilling term and a stale factor (a new linearisation with the same pattern) cost GMRES
+// products, not accuracy: the products are with the exact J.
+TEST(ContactJacobianSolver, DrillingTermAndStaleFactorStayExact) {
+  Synthetic s = make_synthetic();
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
+  const SparseMatrix J1 = s.jacobian();
+  solver.factorize(J1, kShell, s.rotations, s.rows);
+  expect_matches_dense_lu(solver, J1);
+  s.D(3, 4) = 0.4;
+  s.D(4, 3) = -0.2;
+  s.K *= 1.05;
+  s.rows[1].a = 0.1;
+  const SparseMatrix J2 = s.jacobian();
+  solver.factorize(J2, kShell, s.rotations, s.rows);
+  expect_matches_dense_lu(solver, J2);
+  EXPECT_EQ(solver.counters().lu_fallbacks, 0);
+}
+
+// Candidates appended to the set (Problem::adapt) change J's pattern but not the shell block:
+// the factor is kept, the new rows enter the preconditioner uncondensed, and the solve stays
+// that of the exact J.
+TEST(ContactJacobianSolver, AppendedRowsKeepTheFactorAndStayExact) {
+  Synthetic s = make_synthetic();
+  const ContactJacobianRow appended = s.rows.back();
+  s.rows.pop_back();
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
+  const SparseMatrix J1 = s.jacobian();
+  solver.factorize(J1, kShell, s.rotations, s.rows);
+  expect_matches_dense_lu(solver, J1);
+  s.rows.push_back(appended);   // inactive
+  s.rows.push_back(s.rows[1]);  // and a partly active one on node 1
+  s.rows.back().a = 0.2;
+  const SparseMatrix J2 = s.jacobian();
+  ASSERT_NE(J2.rows(), J1.rows());
+  solver.factorize(J2, kShell, s.rotations, s.rows);
+  expect_matches_dense_lu(solver, J2);
+  EXPECT_EQ(solver.counters().cholesky, 1);
+  EXPECT_EQ(solver.counters().lu_fallbacks, 0);
+}
+
+// The Newton systems are solved to a relative residual (the inexact Newton forcing term of
+// IndentationOptions::krylov_tolerance): the residual of the returned solution is within it,
+// and a looser tolerance takes no more products than a tight one.
+TEST(ContactJacobianSolver, SolvesToTheRequestedRelativeResidual) {
+  Synthetic s = make_synthetic();
+  s.D(3, 4) = 0.4;  // an unsymmetric part: GMRES needs several products
+  s.D(4, 3) = -0.2;
+  const SparseMatrix J = s.jacobian();
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(J.rows(), -2.0, 1.0);
+  long products[2] = {0, 0};
+  const double tolerances[2] = {1e-4, 1e-12};
+  for (int k = 0; k < 2; ++k) {
+    ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack, tolerances[k]);
+    solver.factorize(J, kShell, s.rotations, s.rows);
+    const Eigen::VectorXd x = solver.solve(b);
+    EXPECT_LE((J * x - b).norm(), tolerances[k] * b.norm()) << tolerances[k];
+    products[k] = solver.counters().krylov_products;
+  }
+  EXPECT_LE(products[0], products[1]);
+  EXPECT_THROW(ContactJacobianSolver(kKappa, LinearSolverKind::kUmfpack, 0.0), Error);
+}
+
+// An indefinite shell block (past a limit point) has no Cholesky factor: the LU takes over.
+TEST(ContactJacobianSolver, IndefiniteShellBlockFallsBackToLu) {
+  const Synthetic s = make_synthetic(-1.0);
+  const SparseMatrix J = s.jacobian();
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
+  solver.factorize(J, kShell, s.rotations, s.rows);
+  expect_matches_dense_lu(solver, J);
+  EXPECT_EQ(solver.counters().lu_fallbacks, 1);
+}
+
+}  // namespace
+}  // namespace si

@@ -1,0 +1,117 @@
+// docs/results.md's column table and studies/result_columns.py are generated from the column
+// table (analysis/path_columns.hpp): these tests fail when either differs from it. To
+// regenerate both after changing the table: scripts/update_schema.sh (it runs these tests with
+// SHELLINDENT_WRITE_SCHEMA=1, which writes the files instead of comparing).
+#include "io/column_tables.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "analysis/path_columns.hpp"
+#include "core/error.hpp"
+
+namespace si {
+namespace {
+
+std::string source_file(const std::string& relative) {
+  return std::string(SHELLINDENT_SOURCE_DIR) + "/" + relative;
+}
+
+std::string read(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool writing() {
+  const char* v = std::getenv("SHELLINDENT_WRITE_SCHEMA");
+  return v != nullptr && std::string(v) == "1";
+}
+
+// `text` with the block between the markers replaced by `block`; empty if a marker is missing.
+std::string with_block(const std::string& text, const std::string& block) {
+  const std::size_t begin = text.find(kColumnsBegin), end = text.find(kColumnsEnd);
+  if (begin == std::string::npos || end == std::string::npos || end < begin) return "";
+  const std::size_t from = begin + std::string(kColumnsBegin).size() + 1;  // after its newline
+  return text.substr(0, from) + block + text.substr(end);
+}
+
+TEST(ColumnTables, ResultsDocHasTheTable) {
+  const std::string path = source_file("docs/results.md");
+  const std::string text = read(path);
+  const std::string expected = with_block(text, path_columns_markdown());
+  ASSERT_FALSE(expected.empty()) << path << " lacks the markers " << kColumnsBegin;
+  if (writing() && text != expected) std::ofstream(path) << expected;
+  EXPECT_EQ(writing() ? expected : text, expected)
+      << path << " differs from the column table: run scripts/update_schema.sh";
+}
+
+TEST(ColumnTables, StudiesModuleHasTheTable) {
+  const std::string path = source_file("studies/result_columns.py");
+  const std::string expected = path_columns_python();
+  if (writing() && read(path) != expected) std::ofstream(path) << expected;
+  EXPECT_EQ(read(path), expected) << path << " differs from the column table: run "
+                                  << "scripts/update_schema.sh";
+}
+
+// The comparison sees a change: a doc with one row altered no longer matches.
+TEST(ColumnTables, AnAlteredRowIsADifference) {
+  const std::string doc =
+      std::string("# x\n") + kColumnsBegin + "\n" + path_columns_markdown() + kColumnsEnd + "\n";
+  EXPECT_EQ(with_block(doc, path_columns_markdown()), doc);
+  std::string altered = doc;
+  altered.replace(altered.find("strain energy"), 6, "stress");
+  EXPECT_NE(with_block(altered, path_columns_markdown()), altered);
+  EXPECT_EQ(with_block("no markers", path_columns_markdown()), "");
+}
+
+TEST(PathColumns, NamesAreUniqueAndEveryColumnIsComputedAndRestored) {
+  std::set<std::string> names;
+  for (const ColumnSpec& c : path_columns()) {
+    EXPECT_TRUE(names.insert(c.name).second) << c.name;
+    EXPECT_NE(std::string(c.unit), "") << c.name;
+    EXPECT_FALSE(c.description.empty()) << c.name;
+    EXPECT_TRUE((c.of_state == nullptr) != (c.of_point == nullptr)) << c.name;
+    EXPECT_NE(c.restore, nullptr) << c.name;
+    if (c.monitor) {
+      EXPECT_NE(c.of_state, nullptr) << c.name << ": a monitor needs the state only";
+    }
+  }
+  EXPECT_EQ(std::string(column_name(PathColumn::kForce)), "force_N");
+  EXPECT_EQ(path_columns().back().id, PathColumn::kK22ContactMax);
+}
+
+// The checkpoint's point values restore every column (distinct values, so a swap shows).
+TEST(PathColumns, PointValuesRoundTrip) {
+  std::vector<double> v;
+  for (std::size_t i = 0; i < path_columns().size(); ++i) v.push_back(1.5 + static_cast<double>(i));
+  v[static_cast<std::size_t>(PathColumn::kContactNodes)] = 7;
+  v[static_cast<std::size_t>(PathColumn::kIterations)] = 3;
+  EXPECT_EQ(path_point_values(path_point_from_values(v)), v);
+  EXPECT_THROW(path_point_from_values(std::vector<double>(3, 0.0)), Error);
+}
+
+// The monitors are the table's monitor columns, in its order: the force, the apex deflection,
+// the contact radius and the apex curvatures.
+TEST(PathColumns, MonitorsAreTheMonitorColumns) {
+  const std::vector<StateMonitor> m = path_monitors();
+  ASSERT_EQ(m.size(), 6u);
+  EXPECT_EQ(m[0].name, "force_N");
+  EXPECT_EQ(m[5].name, "k22_per_mm");
+  IndentationState s;
+  s.force = 2;
+  s.apex_curvature = Vector3d(3, 4, 5);
+  const Eigen::VectorXd values = monitor_values(s);
+  EXPECT_EQ(values[0], 2);
+  EXPECT_EQ(values[5], 5);
+  EXPECT_EQ(m[3].value(s), 3);
+}
+
+}  // namespace
+}  // namespace si
