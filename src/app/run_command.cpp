@@ -265,8 +265,12 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
     for (const auto& f : record.value("vtu", nlohmann::json::array()))
       vtus.emplace_back(f.at(0).get<double>(), f.at(1).get<std::string>());
   };
-  const PathResult r = run_indentation_path(setup, on_point, control);
+  PathResult r = run_indentation_path(setup, on_point, control);
   progress.done();
+  // The path's files say why it stopped in the user's terms (the callback is how a signal
+  // stops a continuation; "stopped by the callback" tells a user nothing).
+  if (r.status == RunStatus::kStopped && interrupted())
+    r.reason = std::string("interrupted (") + interrupt_name() + ")";
   // The last point always has its fields (vtu_every counts points: a 0-10 mm run's last VTU was
   // at 6.22 mm).
   if (formats.vtu && cf.output.vtu_every > 0 && !r.points.empty() &&
@@ -298,14 +302,11 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   for (std::size_t i = 0; i < written.size(); ++i) err << (i ? ", " : "") << written[i];
   err << (written.empty() ? "nothing (output.formats)" : "") << "\n";
   if (r.completed) return 0;
-  // The status says the callback stopped the run; the signal that asked it to, what the user did.
-  const bool interrupt = r.status == RunStatus::kStopped && interrupted();
   err << "shellindent: error: the run stopped after " << r.points.size() << " converged point(s)"
       << (r.points.empty()
               ? ""
               : " at depth " + format_quantity(r.points.back().state.depth, Dimension::kLength))
-      << ": " << (interrupt ? std::string("interrupted (") + interrupt_name() + ")" : r.reason)
-      << "\n";
+      << ": " << r.reason << "\n";
   return 1;
 }
 

@@ -163,6 +163,7 @@ TEST(RunInterrupts, SigtermWritesEveryPointAndTheResumeIsBitIdentical) {
   EXPECT_GE(stopped.at("points").size(), 4u);  // every converged point, path_0003.vtu's included
   EXPECT_TRUE(fs::exists(out / "path.csv"));
   EXPECT_TRUE(fs::exists(out / "events.json"));
+  EXPECT_EQ(stopped.at("reason"), "interrupted (SIGTERM)");  // not "stopped by the callback"
 
   const auto resumed = run_cli(run_args(c, out) + " --resume");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
@@ -268,6 +269,70 @@ TEST(RunInterrupts, SecondRunIntoTheSameDirectoryIsRefused) {
   EXPECT_EQ(second.exit_code, 2) << second.output;
   EXPECT_TRUE(contains(second.output, "--out")) << second.output;
   EXPECT_EQ(read_file(out / "path.csv"), read_file(reference_run() / "path.csv"));
+}
+
+// Item 11 for a sweep: SIGTERM (or Ctrl-C) to `shellindent sweep` starts no more cases, passes
+// the signal on to the running case, which stops after its point and writes what converged, and
+// the sweep then writes its summary, the cases it did not start marked not_run, and exits 1. A
+// rerun finishes the study.
+TEST(RunInterrupts, SigtermToASweepStopsItsCasesAndSummarisesWhatRan) {
+  const fs::path dir = fresh_dir("interrupt_sweep");
+  const fs::path base = testing::write_case(dir, small_case());
+  const fs::path study = dir / "study.yaml";
+  std::ofstream(study) << "base: " << base.string() << "\n"
+                       << "vary: {laminate.layup: [\"[0/0]2S\", \"[0/90]2S\", \"[90/0]2S\"]}\n";
+  const fs::path out = dir / "out";
+  const Spawned sweep =
+      spawn({"sweep", study.string(), "-j", "1", "--out", out.string()}, dir / "sweep.log");
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  fs::path first_case;
+  while (first_case.empty() && std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(out / "cases", ec))
+      if (fs::exists(e.path() / "path_0003.vtu")) first_case = e.path();
+  }
+  ASSERT_FALSE(first_case.empty()) << read_file(dir / "sweep.log");
+  kill(sweep.pid, SIGTERM);
+  const int code = wait_for(sweep);
+  const std::string log = read_file(dir / "sweep.log");
+  EXPECT_EQ(code, 1) << log;
+  EXPECT_TRUE(contains(log, "interrupted (SIGTERM)")) << log;
+  // The running case stopped after its point with everything that converged written (or had
+  // just finished); the sweep waited for it.
+  const nlohmann::json path = nlohmann::json::parse(read_file(first_case / "path.json"));
+  EXPECT_GE(path.at("points").size(), 4u);
+  if (path.at("status") != "reached_bound") {
+    EXPECT_EQ(path.at("reason"), "interrupted (SIGTERM)") << path.dump(1);
+  }
+  const nlohmann::json summary = nlohmann::json::parse(read_file(out / "sweep.json"));
+  ASSERT_EQ(summary.at("cases").size(), 3u);
+  int not_run = 0;
+  for (const auto& row : summary.at("cases")) not_run += row.at("status") == "not_run" ? 1 : 0;
+  EXPECT_GE(not_run, 1) << summary.dump(1);
+  EXPECT_TRUE(fs::exists(out / "sweep.csv"));
+
+  const auto rerun = run_cli("sweep '" + study.string() + "' -j 1 --out '" + out.string() + "'");
+  EXPECT_EQ(rerun.exit_code, 0) << rerun.output;
+}
+
+// The same request delivered twice within a second (a scheduler signals every process of the
+// job, and a sweep forwards the signal to its cases) stops the run gracefully, once.
+TEST(RunInterrupts, RepeatedSigtermWithinASecondIsOneRequest) {
+  const fs::path dir = fresh_dir("interrupt_twice");
+  const fs::path c = testing::write_case(dir, small_case());
+  const fs::path out = dir / "out";
+  const Spawned run =
+      spawn({"run", c.string(), "--threads", "1", "--out", out.string()}, dir / "run.log");
+  ASSERT_TRUE(wait_for_file(out / "path_0003.vtu", 60)) << read_file(dir / "run.log");
+  kill(run.pid, SIGTERM);
+  kill(run.pid, SIGTERM);
+  const int code = wait_for(run);
+  const std::string log = read_file(dir / "run.log");
+  if (code == 0) GTEST_SKIP() << "the run ended before the signal arrived:\n" << log;
+  EXPECT_EQ(code, 1) << log;  // not -SIGTERM: the second delivery did not end it at once
+  EXPECT_TRUE(contains(log, "interrupted (SIGTERM)")) << log;
+  EXPECT_TRUE(fs::exists(out / "path.json"));
 }
 
 }  // namespace
