@@ -121,6 +121,26 @@ bool wait_for_file(const fs::path& file, double seconds) {
   return true;
 }
 
+// A background `run` of small_case() in the fresh directory `name`, under way once its VTU
+// `frame` exists (`started` false, with the log, if it never did within a minute).
+struct BackgroundRun {
+  fs::path dir, case_file, out, log;
+  Spawned process;
+  bool started = false;
+};
+
+BackgroundRun start_run(const std::string& name, const char* frame, const char* log = "run.log") {
+  BackgroundRun r;
+  r.dir = fresh_dir(name);
+  r.case_file = testing::write_case(r.dir, small_case());
+  r.out = r.dir / "out";
+  r.log = r.dir / log;
+  r.process =
+      spawn({"run", r.case_file.string(), "--threads", "1", "--out", r.out.string()}, r.log);
+  r.started = wait_for_file(r.out / frame, 60);
+  return r;
+}
+
 // Items 17 and 21: the last point has its VTU although vtu_every does not divide its index,
 // and a run that reached depth_max says so in the path's terms.
 TEST(RunInterrupts, UninterruptedRunWritesTheLastFrameAndSaysItReachedDepthMax) {
@@ -147,15 +167,12 @@ TEST(RunInterrupts, UninterruptedRunWritesTheLastFrameAndSaysItReachedDepthMax) 
 // uninterrupted run's, and path.pvd lists the frames from before and after the stop.
 TEST(RunInterrupts, SigtermWritesEveryPointAndTheResumeIsBitIdentical) {
   const fs::path& reference = reference_run();
-  const fs::path dir = fresh_dir("interrupt_sigterm");
-  const fs::path c = testing::write_case(dir, small_case());
-  const fs::path out = dir / "out";
-  const Spawned run =
-      spawn({"run", c.string(), "--threads", "1", "--out", out.string()}, dir / "run.log");
-  ASSERT_TRUE(wait_for_file(out / "path_0003.vtu", 60)) << read_file(dir / "run.log");
-  kill(run.pid, SIGTERM);
-  const int code = wait_for(run);
-  const std::string log = read_file(dir / "run.log");
+  const BackgroundRun run = start_run("interrupt_sigterm", "path_0003.vtu");
+  ASSERT_TRUE(run.started) << read_file(run.log);
+  const fs::path& out = run.out;
+  kill(run.process.pid, SIGTERM);
+  const int code = wait_for(run.process);
+  const std::string log = read_file(run.log);
   if (code == 0) GTEST_SKIP() << "the run ended before the signal arrived:\n" << log;
   EXPECT_EQ(code, 1) << log;
   EXPECT_TRUE(contains(log, "interrupted (SIGTERM)")) << log;
@@ -165,7 +182,7 @@ TEST(RunInterrupts, SigtermWritesEveryPointAndTheResumeIsBitIdentical) {
   EXPECT_TRUE(fs::exists(out / "events.json"));
   EXPECT_EQ(stopped.at("reason"), "interrupted (SIGTERM)");  // not "stopped by the callback"
 
-  const auto resumed = run_cli(run_args(c, out) + " --resume");
+  const auto resumed = run_cli(run_args(run.case_file, out) + " --resume");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   for (const char* file : {"path.csv", "path_grid.csv", "path.pvd"})
     EXPECT_EQ(read_file(out / file), read_file(reference / file)) << file << " differs";
@@ -255,15 +272,12 @@ TEST(RunInterrupts, KillAtAnyInstantLeavesAResumableStateOrNothingToResume) {
 
 // Item 14: a second run into a directory that a running one is writing is refused at once.
 TEST(RunInterrupts, SecondRunIntoTheSameDirectoryIsRefused) {
-  const fs::path dir = fresh_dir("interrupt_lock");
-  const fs::path c = testing::write_case(dir, small_case());
-  const fs::path out = dir / "out";
-  const Spawned first =
-      spawn({"run", c.string(), "--threads", "1", "--out", out.string()}, dir / "first.log");
-  ASSERT_TRUE(wait_for_file(out / "path_0000.vtu", 60)) << read_file(dir / "first.log");
-  const auto second = run_cli(run_args(c, out));
-  const int first_code = wait_for(first);
-  EXPECT_EQ(first_code, 0) << read_file(dir / "first.log");
+  const BackgroundRun first = start_run("interrupt_lock", "path_0000.vtu", "first.log");
+  ASSERT_TRUE(first.started) << read_file(first.log);
+  const fs::path& out = first.out;
+  const auto second = run_cli(run_args(first.case_file, out));
+  const int first_code = wait_for(first.process);
+  EXPECT_EQ(first_code, 0) << read_file(first.log);
   if (!contains(second.output, "another shellindent run") && second.exit_code == 0)
     GTEST_SKIP() << "the first run ended before the second started";
   EXPECT_EQ(second.exit_code, 2) << second.output;
@@ -319,20 +333,16 @@ TEST(RunInterrupts, SigtermToASweepStopsItsCasesAndSummarisesWhatRan) {
 // The same request delivered twice within a second (a scheduler signals every process of the
 // job, and a sweep forwards the signal to its cases) stops the run gracefully, once.
 TEST(RunInterrupts, RepeatedSigtermWithinASecondIsOneRequest) {
-  const fs::path dir = fresh_dir("interrupt_twice");
-  const fs::path c = testing::write_case(dir, small_case());
-  const fs::path out = dir / "out";
-  const Spawned run =
-      spawn({"run", c.string(), "--threads", "1", "--out", out.string()}, dir / "run.log");
-  ASSERT_TRUE(wait_for_file(out / "path_0003.vtu", 60)) << read_file(dir / "run.log");
-  kill(run.pid, SIGTERM);
-  kill(run.pid, SIGTERM);
-  const int code = wait_for(run);
-  const std::string log = read_file(dir / "run.log");
+  const BackgroundRun run = start_run("interrupt_twice", "path_0003.vtu");
+  ASSERT_TRUE(run.started) << read_file(run.log);
+  kill(run.process.pid, SIGTERM);
+  kill(run.process.pid, SIGTERM);
+  const int code = wait_for(run.process);
+  const std::string log = read_file(run.log);
   if (code == 0) GTEST_SKIP() << "the run ended before the signal arrived:\n" << log;
   EXPECT_EQ(code, 1) << log;  // not -SIGTERM: the second delivery did not end it at once
   EXPECT_TRUE(contains(log, "interrupted (SIGTERM)")) << log;
-  EXPECT_TRUE(fs::exists(out / "path.json"));
+  EXPECT_TRUE(fs::exists(run.out / "path.json"));
 }
 
 }  // namespace
