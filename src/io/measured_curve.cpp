@@ -56,13 +56,17 @@ int find_column(const CsvTable& t, const std::string& asked, Dimension dim, cons
                     ", or choose one with " + option + "; the columns are: " + join(t.names),
                 Where{t.file, "header", "", t.header_line});
   }
-  std::vector<std::string> names;
+  std::vector<std::string> names;  // the name parts, for a suggestion
   for (std::size_t j = 0; j < t.names.size(); ++j) {
     if (t.names[j] == asked || split_column_name(t.names[j]).name == asked)
       return static_cast<int>(j);
     names.push_back(split_column_name(t.names[j]).name);
   }
-  return t.column_index(asked);  // throws, listing the columns with a did-you-mean
+  std::string hint = did_you_mean(asked, t.names);
+  for (std::size_t j = 0; j < names.size() && hint.empty(); ++j)
+    if (!did_you_mean(asked, {names[j]}).empty()) hint = " (did you mean '" + t.names[j] + "'?)";
+  throw_input("no such column" + hint + "; the columns are: " + join(t.names),
+              Where{t.file, "column", asked, t.header_line});
 }
 
 // The column's unit, checked: present and of the right kind. Returns the factor to mm or N.
