@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 
 #include "fitting/fit_result.hpp"
@@ -60,27 +61,31 @@ class Evaluations {
   Evaluations(const CalibrationProblem& p, const CalibrationSettings& s, CalibrationCounts& counts)
       : p_(p), s_(s), counts_(counts) {}
 
-  // A copy: the records grow while a caller still looks at an earlier one.
+  // A copy: the records grow while a caller still looks at an earlier one. Thread-safe: the
+  // model runs outside the lock, the bookkeeping and the progress report inside it.
   Record run(const Eigen::VectorXd& c, CalibrationPhase phase) {
-    for (const Record& r : done_)
-      if (r.c == c) return r;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      for (const Record& r : done_)
+        if (r.c == c) return r;
+    }
     const auto t0 = Clock::now();
     Record r{c, p_.model(c), kNaN};
     const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     r.out.ok = r.out.ok && r.out.predicted.size() == p_.y.size() && r.out.predicted.allFinite();
     if (r.out.ok) r.sse = weighted_sse(r.out.predicted);
+    const std::lock_guard<std::mutex> lock(mutex_);
     if (r.out.ok && r.sse < best_sse()) best_ = static_cast<int>(done_.size());
     if (r.out.ok) worst_ = std::max(worst_, r.sse);
     (phase == CalibrationPhase::kSearch ? counts_.search : counts_.jacobian) += 1;
     counts_.failed += r.out.ok ? 0 : 1;
-    done_.push_back(std::move(r));
+    done_.push_back(r);
     if (s_.progress) {
-      const Record& last = done_.back();
-      CalibrationProgress info{counts_.total(), phase,      c,       last.out.ok,
-                               last.sse,        best_sse(), seconds, last.out.failure};
+      CalibrationProgress info{counts_.total(), phase,     c, r.out.ok, r.sse, best_sse(), seconds,
+                               r.out.failure,   r.out.note};
       if (!s_.progress(info)) throw Interrupted{};
     }
-    return done_.back();
+    return r;
   }
 
   double weighted_sse(const Eigen::VectorXd& predicted) const {
@@ -96,6 +101,7 @@ class Evaluations {
   const CalibrationSettings& s_;
   CalibrationCounts& counts_;
   std::vector<Record> done_;
+  std::mutex mutex_;
   int best_ = -1;
   double worst_ = 0.0;
 };
@@ -197,6 +203,15 @@ bool fill_inference(const CalibrationProblem& p, const CalibrationSettings& s, E
   out.std_errors = stats.std_errors;
   out.ci_lower = stats.ci_lower;
   out.ci_upper = stats.ci_upper;
+  // How far the search stopped from the optimum of the linearised problem: the Gauss-Newton step
+  // from the best point, in standard errors (Bates & Watts 1988, sec. 2.2: the increment that
+  // minimises |W^1/2 (r + J d)|). Small against 1: the reported point is the optimum as far as
+  // the data can tell.
+  const Eigen::VectorXd step = (sqrt_w.asDiagonal() * mj.jacobian)
+                                   .colPivHouseholderQr()
+                                   .solve(-sqrt_w.cwiseProduct(out.residuals));
+  out.gauss_newton_step = step;
+  out.distance_to_optimum = (step.array() / stats.std_errors.array()).abs().maxCoeff();
   out.correlation = correlation_matrix(stats.covariance);
   if (stats.covariance.allFinite() && stats.dof >= 1)
     out.ellipsoid = confidence_ellipsoid(stats.covariance, stats.dof, s.confidence);

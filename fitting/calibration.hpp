@@ -48,6 +48,7 @@ struct ModelOutput {
   Eigen::VectorXd predicted;
   bool ok = false;
   std::string failure;  // why not, when !ok
+  std::string note;     // optional, for the progress report (e.g. how the run was started)
 };
 using CalibrationModel = std::function<ModelOutput(const Eigen::VectorXd& parameters)>;
 
@@ -61,7 +62,8 @@ struct CalibrationProblem {
 enum class CalibrationAlgorithm { kDerivativeFree, kGradient };
 enum class CalibrationPhase { kSearch, kJacobian };
 
-// Reported after every model evaluation; the callback returns false to stop (Ctrl-C).
+// Reported after every model evaluation (one call at a time, also when evaluations run
+// concurrently); the callback returns false to stop (Ctrl-C).
 struct CalibrationProgress {
   int evaluation = 0;  // 1-based, all phases
   CalibrationPhase phase = CalibrationPhase::kSearch;
@@ -71,6 +73,7 @@ struct CalibrationProgress {
   double best_sse = 0;  // the smallest S so far
   double seconds = 0;   // the evaluation's wall time
   std::string failure;
+  std::string note;  // the model's ModelOutput::note
 };
 
 struct CalibrationSettings {
@@ -80,6 +83,9 @@ struct CalibrationSettings {
   double xtol = 1e-4;           // stop when the step is below this fraction of each range
   double ftol_rel = 1e-10;      // ... or S changes by less than this, relatively
   double jacobian_step = 1e-3;  // model_jacobian.hpp's relative_step
+  // The Jacobian's 2p evaluations at the optimum run this many at a time (threads); the model
+  // must then be thread-safe. The search itself is sequential.
+  int concurrent_evaluations = 1;
   double confidence = 0.95;
   IdentifiabilityLimits limits;
   std::function<bool(const CalibrationProgress&)> progress;  // optional
@@ -123,6 +129,11 @@ struct CalibrationResult {
   Eigen::VectorXd jacobian_steps;
   Eigen::MatrixXd covariance, correlation;
   Eigen::VectorXd std_errors, ci_lower, ci_upper;
+  // The Gauss-Newton step from the reported point (what the linearised problem says is left to
+  // the optimum) and its largest component in standard errors: a check that the search went far
+  // enough (<< 1), computed from the Jacobian above, not used to move the point.
+  Eigen::VectorXd gauss_newton_step;
+  double distance_to_optimum = 0;
   double confidence = 0.95;
   ConfidenceEllipsoid ellipsoid;
   IdentifiabilityReport identifiability;

@@ -15,14 +15,15 @@
 
 namespace si::fit {
 
-// y(c), or false when the model cannot be evaluated at c.
+// y(c), or false when the model cannot be evaluated at c. With concurrency > 1 it is called from
+// several threads at once and must be thread-safe.
 using ModelValues = std::function<bool(const Eigen::VectorXd& c, Eigen::VectorXd& y)>;
 
 struct ModelJacobian {
   Eigen::MatrixXd jacobian;  // dy_i / dc_j; a column is NaN where the model failed
   Eigen::VectorXd steps;     // h_j actually used (negative: a backward difference)
   Eigen::VectorXi central;   // 1 where the difference was central
-  int evaluations = 0;       // model calls
+  int evaluations = 0;       // model calls (a failed one included)
   bool ok = true;            // every column computed
 };
 
@@ -32,10 +33,13 @@ enum class DifferenceScheme {
 };
 
 // y0 = y(c) (already known, used by one-sided differences). lower/upper: one per parameter,
-// finite.
+// finite. All the points are known before any is evaluated, so they are evaluated `concurrency`
+// at a time (a central difference whose one point fails falls back to the one-sided difference
+// with the other: no further evaluation).
 ModelJacobian model_jacobian(const ModelValues& model, const Eigen::VectorXd& c,
                              const Eigen::VectorXd& y0, const Eigen::VectorXd& lower,
                              const Eigen::VectorXd& upper, double relative_step = 1e-3,
-                             DifferenceScheme scheme = DifferenceScheme::kCentral);
+                             DifferenceScheme scheme = DifferenceScheme::kCentral,
+                             int concurrency = 1);
 
 }  // namespace si::fit

@@ -21,6 +21,7 @@
 #include "analysis/indentation_problem.hpp"
 #include "analysis/shell_model.hpp"
 #include "continuation/branch.hpp"
+#include "continuation/settings.hpp"
 #include "io/case_file.hpp"
 
 namespace si {
@@ -89,6 +90,10 @@ struct PathControl {
   // from its state and reproduces the uninterrupted run (to roundoff).
   bool resume = false;
 };
+
+// The Newton settings of a continuation run's corrector, for solves at a fixed depth outside a
+// path (io/force_travel.hpp's warm starts).
+cont::NewtonSettings path_newton_settings(const IndentationSetup& setup);
 
 // The depth grid of a path section.
 std::vector<double> depth_grid(const PathSpec& path);

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <optional>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -106,12 +108,14 @@ std::string read_text(const std::string& path) {
 }
 
 // The case with the parameters at `values`, as YAML text and as read by the case-file reader.
+// Thread-safe (the Jacobian's runs read cases concurrently): the YAML is built under a lock.
 class CaseWithParameters {
  public:
   CaseWithParameters(std::string file, const std::vector<Parameter>& params)
       : file_(std::move(file)), root_(YAML::Load(read_text(file_))), params_(params) {}
 
   std::string yaml(const Eigen::VectorXd& values) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
     std::vector<NumericValue> set;
     for (std::size_t j = 0; j < params_.size(); ++j)
       set.push_back({params_[j].key.key, params_[j].key.dimension, values[j]});
@@ -138,6 +142,40 @@ class CaseWithParameters {
   std::string file_;
   YAML::Node root_;
   std::vector<Parameter> params_;
+  mutable std::mutex mutex_;
+};
+
+// The converged states of recent evaluations: a new run starts from those of the nearest one
+// (parameters measured relative to their ranges), io/force_travel.hpp's warm start. Thread-safe.
+class WarmStarts {
+ public:
+  explicit WarmStarts(Eigen::VectorXd width) : width_(std::move(width)) {}
+
+  std::optional<ForceTravelStates> nearest(const Eigen::VectorXd& c) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const Entry* best = nullptr;
+    for (const Entry& e : kept_)
+      if (!best || distance(e.c, c) < distance(best->c, c)) best = &e;
+    return best ? std::optional<ForceTravelStates>(best->states) : std::nullopt;
+  }
+  void add(const Eigen::VectorXd& c, ForceTravelStates states) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    kept_.push_back({c, std::move(states)});
+    if (kept_.size() > kKept) kept_.erase(kept_.begin());
+  }
+
+ private:
+  struct Entry {
+    Eigen::VectorXd c;
+    ForceTravelStates states;
+  };
+  static constexpr std::size_t kKept = 4;
+  double distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
+    return (a - b).cwiseQuotient(width_).norm();
+  }
+  Eigen::VectorXd width_;
+  std::vector<Entry> kept_;
+  mutable std::mutex mutex_;
 };
 
 // Every bound must give a valid case (with the other parameters at their starts): a modulus
@@ -162,8 +200,8 @@ void check_corners(const CaseWithParameters& c, const std::vector<Parameter>& pa
 std::string progress_line(const fit::CalibrationProgress& p, const CaseWithParameters& c) {
   char tail[160];
   if (p.ok)
-    std::snprintf(tail, sizeof tail, "S = %.6g N^2 (best %.6g), %.1f s", p.sse, p.best_sse,
-                  p.seconds);
+    std::snprintf(tail, sizeof tail, "S = %.6g N^2 (best %.6g), %.1f s, %s", p.sse, p.best_sse,
+                  p.seconds, p.note.c_str());
   else
     std::snprintf(tail, sizeof tail, "failed (%.1f s): ", p.seconds);
   return "calibrate: " + std::to_string(p.evaluation) +
@@ -190,6 +228,8 @@ int run_calibrate_command(const CalibrateCommandOptions& o, std::ostream& out, s
   if (o.algorithm != "bobyqa" && o.algorithm != "slsqp")
     throw_input("unknown algorithm (allowed: bobyqa, slsqp)",
                 Where{"command line", "--algorithm", o.algorithm, 0});
+  if (o.jobs < 1)
+    throw_input("expected at least 1 job", Where{"command line", "-j", std::to_string(o.jobs), 0});
   if (o.max_evaluations < 2 * static_cast<int>(params.size()) + 2)
     throw_input("needs at least 2 p + 2 = " + std::to_string(2 * params.size() + 2),
                 Where{"command line", "--max-evaluations", std::to_string(o.max_evaluations), 0});
@@ -214,14 +254,22 @@ int run_calibrate_command(const CalibrateCommandOptions& o, std::ostream& out, s
   const MeasuredCurve& data = context.data;
   problem.x = Eigen::Map<const Eigen::VectorXd>(data.travel.data(), data.travel.size());
   problem.y = Eigen::Map<const Eigen::VectorXd>(data.force.data(), data.force.size());
+  Eigen::VectorXd width(np);
+  for (int j = 0; j < np; ++j) width[j] = params[j].bounds.upper - params[j].bounds.lower;
+  WarmStarts warm(width);
   problem.model = [&](const Eigen::VectorXd& c) {
     fit::ModelOutput m;
     try {
-      const ForceTravel f =
-          run_force_travel(cases.read(c), data.travel, o.threads, [] { return !g_interrupted; });
+      const std::optional<ForceTravelStates> from = warm.nearest(c);
+      ForceTravel f = run_force_travel(
+          cases.read(c), data.travel, o.threads, [] { return !g_interrupted; },
+          from ? &*from : nullptr);
       m.ok = f.ok;
       m.failure = f.failure;
       m.predicted = Eigen::Map<const Eigen::VectorXd>(f.force.data(), f.force.size());
+      m.note = std::string(f.warm ? "warm" : "cold") + " start, " +
+               std::to_string(f.newton_iterations) + " Newton iterations";
+      if (f.ok) warm.add(c, std::move(f.states));
     } catch (const Error& e) {  // a parameter combination the case-file reader refuses
       m.failure = e.what();
     }
@@ -231,6 +279,8 @@ int run_calibrate_command(const CalibrateCommandOptions& o, std::ostream& out, s
   settings.algorithm = o.algorithm == "slsqp" ? fit::CalibrationAlgorithm::kGradient
                                               : fit::CalibrationAlgorithm::kDerivativeFree;
   settings.max_evaluations = o.max_evaluations;
+  settings.xtol = o.xtol;
+  settings.concurrent_evaluations = o.jobs;
   settings.progress = [&](const fit::CalibrationProgress& p) {
     err << progress_line(p, cases) << std::endl;
     return !g_interrupted;

@@ -24,7 +24,9 @@ struct CalibrateCommandOptions {
   std::string out_dir;               // empty: results/<case stem>_calibration
   std::string algorithm = "bobyqa";  // bobyqa (derivative-free) or slsqp (finite differences)
   int max_evaluations = 100;
-  int threads = 0;  // assembly threads of each run (0: OpenMP's default)
+  double xtol = 1e-4;  // the search stops when its steps are below this fraction of each range
+  int threads = 1;     // assembly threads of each run (0: OpenMP's default)
+  int jobs = 1;        // the Jacobian's runs at once (each with `threads` threads)
 };
 
 int run_calibrate_command(const CalibrateCommandOptions& options, std::ostream& out,

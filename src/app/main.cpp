@@ -207,7 +207,16 @@ int run(int argc, char** argv) {
       ->add_option("--max-evaluations", co.max_evaluations,
                    "model evaluations of the search (the Jacobian's 2p come on top)")
       ->capture_default_str();
-  calibrate_cmd->add_option("--threads", co.threads, "assembly threads of each run (0: default)")
+  calibrate_cmd
+      ->add_option("--xtol", co.xtol,
+                   "stop when the search's steps are below this fraction of each parameter's range")
+      ->capture_default_str();
+  calibrate_cmd
+      ->add_option("--threads", co.threads, "assembly threads of each run (0: OpenMP's default)")
+      ->capture_default_str();
+  calibrate_cmd
+      ->add_option("-j,--jobs", co.jobs,
+                   "runs at once for the Jacobian at the optimum (the search is sequential)")
       ->capture_default_str();
 
   auto* materials = app.add_subcommand("materials", "List the built-in material library.");

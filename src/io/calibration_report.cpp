@@ -115,7 +115,9 @@ json calibration_json(const CalibrationContext& c, const fit::CalibrationResult&
             {"sse_N2", nullable(r.sse)},
             {"sse_start_N2", nullable(r.sse_start)},
             {"rmse_N", nullable(r.rmse)},
-            {"residual_std_dev_N", nullable(r.residual_std_dev)}}},
+            {"residual_std_dev_N", nullable(r.residual_std_dev)},
+            {"gauss_newton_step", vector_json(r.gauss_newton_step)},
+            {"distance_to_optimum_in_std_errors", nullable(r.distance_to_optimum)}}},
           {"covariance", matrix_json(r.covariance)},
           {"correlation", matrix_json(r.correlation)},
           {"confidence_region", ellipsoid_json(r)},
@@ -182,6 +184,8 @@ std::string calibration_table(const CalibrationContext& c, const fit::Calibratio
         os << "\n";
       }
     }
+    os << "the search stopped " << number(r.distance_to_optimum, "%.2g")
+       << " standard errors from the optimum of the linearised problem (Gauss-Newton step)\n";
     os << "condition number of the scaled J^T J: "
        << number(r.identifiability.condition_number, "%.3g") << "\n";
   }

@@ -112,7 +112,7 @@ TEST(Calibration, ParametersEnteringAsAProductAreFlagged) {
   p.y = sample(
       x, [](double v) { return 6.0 * v; }, 0.05, 3);
   p.parameters = {{"a", 0.5, 5.0, 1.0}, {"b", 0.5, 5.0, 1.0}};
-  p.model = [x](const Eigen::VectorXd& c) { return ModelOutput{c[0] * c[1] * x, true, ""}; };
+  p.model = [x](const Eigen::VectorXd& c) { return ModelOutput{c[0] * c[1] * x, true, "", ""}; };
   const CalibrationResult r = calibrate(p, {});
   ASSERT_TRUE(r.statistics_available) << r.reason;
   EXPECT_GT(r.nlopt_code, 0);
@@ -139,7 +139,7 @@ TEST(Calibration, NearlyProportionalParametersAreCorrelated) {
   p.parameters = {{"a", 0.5, 5.0, 1.0}, {"b", 0.5, 5.0, 1.0}};
   p.model = [x](const Eigen::VectorXd& c) {
     return ModelOutput{(c[0] * c[1] * x.array() + 0.01 * c[0] * x.array().square()).matrix(), true,
-                       ""};
+                       "", ""};
   };
   const CalibrationResult r = calibrate(p, {});
   ASSERT_TRUE(r.statistics_available) << r.reason;
@@ -195,7 +195,7 @@ TEST(Calibration, OneParameter) {
   p.y = sample(x, truth, 0.0, 0);
   p.parameters = {{"a", 10.0, 1000.0, 100.0}};
   p.model = [x](const Eigen::VectorXd& c) {
-    return ModelOutput{(c[0] * x.array().pow(kB)).matrix(), true, ""};
+    return ModelOutput{(c[0] * x.array().pow(kB)).matrix(), true, "", ""};
   };
   const CalibrationResult r = calibrate(p, {});
   ASSERT_EQ(r.status, CalibrationStatus::kConverged) << r.reason;
@@ -212,7 +212,7 @@ TEST(Calibration, FailedEvaluationsAreCountedAndAvoided) {
   p.parameters[1].start = 2.0;
   const auto inner = power_model(x);
   p.model = [inner](const Eigen::VectorXd& c) {
-    if (c[1] > 2.1) return ModelOutput{{}, false, "diverged"};
+    if (c[1] > 2.1) return ModelOutput{{}, false, "diverged", ""};
     return inner(c);
   };
   const CalibrationResult r = calibrate(p, {});
@@ -224,7 +224,7 @@ TEST(Calibration, FailedEvaluationsAreCountedAndAvoided) {
 TEST(Calibration, ModelFailingAtTheStartIsAFailureNotAThrow) {
   const Eigen::VectorXd x = grid(0.1, 2.0, 8);
   CalibrationProblem p = power_problem(x, sample(x, truth, 0.0, 0));
-  p.model = [](const Eigen::VectorXd&) { return ModelOutput{{}, false, "no contact"}; };
+  p.model = [](const Eigen::VectorXd&) { return ModelOutput{{}, false, "no contact", ""}; };
   const CalibrationResult r = calibrate(p, {});
   EXPECT_EQ(r.status, CalibrationStatus::kFailed);
   EXPECT_NE(r.reason.find("no contact"), std::string::npos) << r.reason;
