@@ -3,7 +3,13 @@
 // itself with known parameters plus 1 % noise are recovered within the reported confidence
 // region; two parameters that enter only through one combination raise the identifiability
 // warning; bad input is refused with exit 2 and nothing written.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 
 #include <cmath>
 #include <cstdio>
@@ -21,6 +27,8 @@
 #include "io/case_overrides.hpp"
 #include "io/csv_table.hpp"
 #include "io/force_travel.hpp"
+
+extern char** environ;
 
 namespace si {
 namespace {
@@ -161,6 +169,44 @@ TEST(CalibrateCommand, IndenterModulusAndPoissonRatioAreFlaggedAsNotSeparable) {
                   ? INFINITY
                   : j["identifiability"]["condition_number_scaled_JtJ"].get<double>(),
               j["identifiability"]["warnings"][0]["message"].get<std::string>().c_str());
+}
+
+// Ctrl-C during the search: the run in progress stops, the calibration reports the best point so
+// far (status interrupted, exit 1) and still writes its files.
+TEST(CalibrateCommand, CtrlCStopsAndReportsTheBestPointSoFar) {
+  const fs::path dir = fresh_dir("calibrate_interrupt");
+  const fs::path data = synthetic_data(dir, {{"material.E3", Dimension::kStress, 8000.0}}, 0.01);
+  std::ofstream(dir / "case.yaml") << kCoarseCap;
+  const std::string log = (dir / "log.txt").string();
+  std::vector<std::string> args{
+      SHELLINDENT_EXE,       "calibrate", (dir / "case.yaml").string(), "--data",
+      data.string(),         "--param",   "material.E3=4:20GPa",        "--param",
+      "material.G13=1:8GPa", "--out",     (dir / "out").string()};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, SHELLINDENT_EXE, &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  // Wait for the fourth evaluation to be reported (at most 60 s), then press Ctrl-C.
+  for (int i = 0; i < 600 && !contains(read_file(log), "calibrate: 4 search"); ++i) usleep(100000);
+  kill(pid, SIGINT);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  const std::string output = read_file(log);
+  ASSERT_TRUE(WIFEXITED(status)) << output;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << output;
+  EXPECT_TRUE(contains(output, "interrupted (Ctrl-C)")) << output;
+  const json j = json::parse(read_file(dir / "out" / "calibration.json"));
+  EXPECT_EQ(j["status"], "interrupted");
+  EXPECT_GE(j["evaluations"]["search"].get<int>(), 4);
+  EXPECT_LE(j["statistics"]["sse_N2"].get<double>(), j["statistics"]["sse_start_N2"].get<double>());
+  EXPECT_TRUE(fs::exists(dir / "out" / "calibrated_case.yaml"));
 }
 
 // Each bad input: exit 2, the message names where, and nothing is written (no output directory).
