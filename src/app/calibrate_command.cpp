@@ -260,7 +260,7 @@ int run_calibrate_command(const CalibrateCommandOptions& o, std::ostream& out, s
   problem.model = [&](const Eigen::VectorXd& c) {
     fit::ModelOutput m;
     try {
-      const std::optional<ForceTravelStates> from = warm.nearest(c);
+      const std::optional<ForceTravelStates> from = o.warm_start ? warm.nearest(c) : std::nullopt;
       ForceTravel f = run_force_travel(
           cases.read(c), data.travel, o.threads, [] { return !g_interrupted; },
           from ? &*from : nullptr);

@@ -24,9 +24,10 @@ struct CalibrateCommandOptions {
   std::string out_dir;               // empty: results/<case stem>_calibration
   std::string algorithm = "bobyqa";  // bobyqa (derivative-free) or slsqp (finite differences)
   int max_evaluations = 100;
-  double xtol = 1e-4;  // the search stops when its steps are below this fraction of each range
-  int threads = 1;     // assembly threads of each run (0: OpenMP's default)
-  int jobs = 1;        // the Jacobian's runs at once (each with `threads` threads)
+  double xtol = 1e-4;      // the search stops when its steps are below this fraction of each range
+  int threads = 1;         // assembly threads of each run (0: OpenMP's default)
+  int jobs = 1;            // the Jacobian's runs at once (each with `threads` threads)
+  bool warm_start = true;  // start each run from the nearest earlier one's states
 };
 
 int run_calibrate_command(const CalibrateCommandOptions& options, std::ostream& out,

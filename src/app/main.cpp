@@ -214,6 +214,9 @@ int run(int argc, char** argv) {
   calibrate_cmd
       ->add_option("--threads", co.threads, "assembly threads of each run (0: OpenMP's default)")
       ->capture_default_str();
+  calibrate_cmd->add_flag("!--no-warm-start", co.warm_start,
+                          "run every evaluation's full path from first touch (default: each run "
+                          "starts from the nearest earlier run's converged states)");
   calibrate_cmd
       ->add_option("-j,--jobs", co.jobs,
                    "runs at once for the Jacobian at the optimum (the search is sequential)")
