@@ -168,14 +168,7 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   c.p_max = path.depth_max;
   c.p_min = -path.depth_max;  // a snap-back may reduce the depth; never below minus the path
   c.max_steps = static_cast<int>(20 * path.depth_max / path.step) + 100;
-  c.newton.relative_tolerance = 1e-10;
-  // The force a gap of one depth step would carry: the scale of the equilibrium residual.
-  c.newton.residual_scale = s.problem->stiffness_scale() * path.step;
-  c.newton.max_iterations = 25;
-  // KINSOL's step limit is an L2 length over all unknowns, and the multipliers are forces (N):
-  // its default, 1000 max(1, |z0|), cuts the Newton steps of a stiff shell short (measured: 2 %
-  // residual decrease per iteration on the paper's cap). Allow any step the line search accepts.
-  c.newton.max_step = 1e12;
+  c.newton = path_newton_settings(s);
   c.extremum_monitors = {column_name(PathColumn::kForce)};
   // Inflections of T_N against k11, k22 (the critical force) come from the points afterwards
   // (critical_force.hpp): located ones would sit on every contact-set change.
@@ -285,6 +278,19 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
 }
 
 }  // namespace
+
+cont::NewtonSettings path_newton_settings(const IndentationSetup& s) {
+  cont::NewtonSettings n;
+  n.relative_tolerance = 1e-10;
+  // The force a gap of one depth step would carry: the scale of the equilibrium residual.
+  n.residual_scale = s.problem->stiffness_scale() * s.spec.path.step;
+  n.max_iterations = 25;
+  // KINSOL's step limit is an L2 length over all unknowns, and the multipliers are forces (N):
+  // its default, 1000 max(1, |z0|), cuts the Newton steps of a stiff shell short (measured: 2 %
+  // residual decrease per iteration on the paper's cap). Allow any step the line search accepts.
+  n.max_step = 1e12;
+  return n;
+}
 
 IndenterPose default_indenter_pose(const IndentationCase& c, const ShellModel& model) {
   IndenterPose pose;

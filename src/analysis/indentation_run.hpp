@@ -21,6 +21,7 @@
 
 #include "analysis/indentation_case.hpp"
 #include "continuation/branch.hpp"
+#include "continuation/settings.hpp"
 #include "indentation/indentation_problem.hpp"
 #include "model/shell_model.hpp"
 
@@ -106,6 +107,10 @@ struct PathControl {
   std::function<nlohmann::json()> save_record;
   std::function<void(const nlohmann::json&)> restore_record;
 };
+
+// The Newton settings of a continuation run's corrector, for solves at a fixed depth outside a
+// path (io/force_travel.hpp's warm starts).
+cont::NewtonSettings path_newton_settings(const IndentationSetup& setup);
 
 // Runs the path. Numerical failures do not throw: they end the path with the reason.
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback = {},
