@@ -270,11 +270,13 @@ void IndentationProblem::build_pattern() {
   }
   alpha_diagonal_ = u.local ? value_slot(jacobian_, u.alpha_index(), u.alpha_index()) : -1;
   // The Krylov solver condenses rows on one node's dofs: not the weighted rows, which span the
-  // node's elements, nor the local approach alpha, which couples every row (the direct LU then).
-  if (options_.linear_solver == kPreconditionedKrylov && !weighted_ && !u.local) {
+  // node's elements (the direct LU then). The local approach alpha, which couples every row,
+  // borders the matrix it solves (bordered_solve.hpp).
+  if (options_.linear_solver == kPreconditionedKrylov && !weighted_) {
     if (!krylov_)
       krylov_ =
           std::make_unique<ContactJacobianSolver>(kappa_, "umfpack", options_.krylov_tolerance);
+    solver_.reset();
   } else {
     krylov_.reset();
     solver_ = make_linear_solver(
@@ -503,7 +505,10 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
       nonlinear ? chart_.to_chart_jacobian(z.head(nf), r_free, jacobian_)
                 : std::vector<ShellChart::RotationBlock>{};
   try {
-    if (krylov_)
+    bordered_lu_ = false;
+    if (krylov_ && u.local)
+      factorize_bordered(rotations, rows);
+    else if (krylov_)
       krylov_->factorize(jacobian_, nf, rotations, rows);
     else
       solver_->factorize(jacobian_);  // the first factorization analyses the pattern
@@ -514,9 +519,34 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   return true;
 }
 
+// The Krylov solver on J without alpha's row and column, alpha by block elimination
+// (bordered_solve.hpp); an LU of the whole J where the elimination's pivot vanishes.
+void IndentationProblem::factorize_bordered(const std::vector<ShellChart::RotationBlock>& rotations,
+                                            const std::vector<ContactJacobianRow>& rows) {
+  const UnknownLayout u = layout();
+  const int n = u.alpha_index(), nf = chart_.size();
+  inner_jacobian_ = jacobian_.topLeftCorner(n, n);
+  inner_jacobian_.makeCompressed();
+  Eigen::VectorXd column = Eigen::VectorXd::Zero(n), row = Eigen::VectorXd::Zero(n);
+  const double* J = jacobian_.valuePtr();
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    column[nf + static_cast<int>(i)] = J[slots_[i].alpha_column];
+    row[nf + static_cast<int>(i)] = J[slots_[i].alpha_row];
+  }
+  krylov_->factorize(inner_jacobian_, nf, rotations, rows);
+  const auto inner = [this](const Eigen::VectorXd& x) { return krylov_->solve(x); };
+  if (bordered_.factorize(column, row, J[alpha_diagonal_], inner)) return;
+  if (!solver_) solver_ = make_linear_solver("umfpack");
+  solver_->factorize(jacobian_);
+  bordered_lu_ = true;
+}
+
 bool IndentationProblem::solve(cont::Vector& b) {
   ++counters_.solves;
-  b = krylov_ ? krylov_->solve(b) : solver_->solve(b);
+  if (krylov_ && layout().local && !bordered_lu_)
+    bordered_.solve(b, [this](const Eigen::VectorXd& x) { return krylov_->solve(x); });
+  else
+    b = krylov_ && !bordered_lu_ ? krylov_->solve(b) : solver_->solve(b);
   return b.allFinite();
 }
 

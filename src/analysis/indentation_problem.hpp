@@ -41,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/bordered_solve.hpp"
 #include "analysis/chart_assembly.hpp"
 #include "analysis/contact_jacobian_solver.hpp"
 #include "analysis/interpolated_contact.hpp"
@@ -68,8 +69,8 @@ struct IndentationOptions {
   NcpFunction ncp = NcpFunction::kFischerBurmeisterMin;
   // The Jacobian's solver: kPreconditionedKrylov (contact_jacobian_solver.hpp; an LU of the
   // Jacobian where it cannot help) or a direct LU, "umfpack" | "klu" (the Jacobian is unsymmetric).
-  // The interpolated traction's rows span several nodes and a power-law local contact adds
-  // the unknown alpha: those use the direct LU.
+  // The interpolated traction's rows span several nodes: it uses the direct LU. A power-law
+  // local contact's unknown alpha borders the Krylov solver's matrix (bordered_solve.hpp).
   std::string linear_solver = "cholesky_gmres";
   // kPreconditionedKrylov: GMRES stops at a relative residual of krylov_tolerance. The Newton
   // corrections need no more than 1e-6: an inexact Newton method with a constant forcing term
@@ -218,6 +219,8 @@ class IndentationProblem : public cont::Problem {
   struct WeightedGaps;
   void choose_candidates(const std::vector<int>& nodes);
   void measure_dent_radii(const std::vector<Vector3d>& points, int first);
+  void factorize_bordered(const std::vector<ShellChart::RotationBlock>& rotations,
+                          const std::vector<ContactJacobianRow>& rows);
   // The local law's dent at mesh node `node` and its rate d/dalpha (zero without a power law).
   DentValue dent(int node, const cont::Vector& z) const;
   void build_pattern();
@@ -272,7 +275,12 @@ class IndentationProblem : public cont::Problem {
   std::unique_ptr<WeightedGaps> weighted_;         // interpolated traction only
   std::unique_ptr<LinearSolver> solver_;           // a direct LU of the Jacobian, or
   std::unique_ptr<ContactJacobianSolver> krylov_;  // the preconditioned Krylov solver
-  int alpha_diagonal_ = -1;                        // (alpha, alpha) with a power-law local contact
+  // Power-law local contact with the Krylov solver: J without alpha's row and column, and the
+  // elimination of alpha (factorize_bordered); bordered_lu_: solver_ has the whole J instead.
+  SparseMatrix inner_jacobian_;
+  BorderedSolve bordered_;
+  bool bordered_lu_ = false;
+  int alpha_diagonal_ = -1;  // (alpha, alpha) with a power-law local contact
   IndentationCounters counters_;
   // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.
   cont::Vector cached_z_;
