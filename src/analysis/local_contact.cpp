@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "contact/anisotropic_local_law.hpp"
 #include "core/error.hpp"
 #include "section/vam_section.hpp"
 
@@ -15,6 +16,8 @@ const char* local_contact_name(LocalContactModel m) {
       return "yang_sun";
     case LocalContactModel::kVam:
       return "vam";
+    case LocalContactModel::kAnisotropic:
+      return "anisotropic";
     case LocalContactModel::kNone:
       break;
   }
@@ -42,7 +45,7 @@ LocalContactLaw local_contact_law(const CaseFile& c) {
     const double compliance = analyze_vam(c.laminate).c_L(0, 0);
     if (!(compliance > 0))
       throw_input("the section's face compliance c_L++ is not positive", where);
-    return {LocalLawKind::kThinLayer, 0.0, compliance, 0.0};
+    return {LocalLawKind::kThinLayer, 0.0, compliance, 0.0, nullptr};
   }
   if (c.indenter.shape != IndenterShape::kSphere)
     throw_input("a Hertz-type local law needs a spherical indenter", where);
@@ -53,6 +56,11 @@ LocalContactLaw local_contact_law(const CaseFile& c) {
   if (m == LocalContactModel::kYangSun) return yang_sun_law(Ri, Ei, nui, top.E3);
   const double R =
       c.shell.type == ShellType::kSphericalCap ? 1 / (1 / Ri + 1 / c.shell.radius) : Ri;
+  if (m == LocalContactModel::kAnisotropic) {
+    const double indenter = Ei > 0 ? 2 * (1 - nui * nui) / Ei : 0.0;
+    return anisotropic_local_law(c.laminate,
+                                 {c.contact.local_support, c.contact.local_plies, R, indenter});
+  }
   return hertz_law(R, hertz_modulus(Ei, nui, top.E3, top.nu23));
 }
 

@@ -31,22 +31,20 @@ LayerContactLaw::LayerContactLaw(const SupportSpec& spec, double sphere_radius,
   std::vector<double> a_over_r(sigma.size());
   for (std::size_t j = 0; j < sigma.size(); ++j) a_over_r[j] = 1 - sigma[j] * sigma[j];
   std::vector<double> A(tau.size()), B(tau.size()), P(tau.size());
-  Eigen::MatrixXd U(tau.size(), sigma.size()), W(tau.size(), sigma.size());
+  Eigen::MatrixXd V(tau.size(), sigma.size());
   for (std::size_t i = 0; i < tau.size(); ++i) {
     const SphereOnLayerSolution s = contact.solve(lambda_max_ * tau[i] * tau[i]);
     A[i] = s.approach, B[i] = s.force, P[i] = s.punch;
     const SphereOnLayer::OuterFace face = contact.outer_face(s, a_over_r);
     for (std::size_t j = 0; j < sigma.size(); ++j) {
-      const bool edge = sigma[j] <= 0;  // r = a: continuity with the patch, exactly
-      U(i, j) = edge ? s.approach - 0.5 : face.sphere[j];
-      W(i, j) = edge ? 1.0 : face.punch[j];
+      const double s2 = sigma[j] * sigma[j];
+      V(i, j) = s2 > 0 ? (face.sphere[j] - (s.approach - 0.5)) / s2 : -1.0;  // the header
     }
   }
   approach_ = ChebyshevSeries(0, 1, A);
   force_ = ChebyshevSeries(0, 1, B);
   punch_ = ChebyshevSeries(0, 1, P);
-  outer_ = ChebyshevTable2(0, 1, 0, 1, U);
-  outer_rate_ = ChebyshevTable2(0, 1, 0, 1, W);
+  outer_ = ChebyshevTable2(0, 1, 0, 1, V);
 }
 
 double LayerContactLaw::tau(double lambda) const {
@@ -159,10 +157,19 @@ DentValue LayerContactLaw::dent(double r, double alpha) const {
   if (r <= a) {
     d.u = depth - r * r / (2 * R_);
     d.rate = 1;
-  } else {
-    const double sigma = std::sqrt(1 - a / r);
-    d.u = a * a / R_ * outer_(tau(a / h_), sigma);
-    d.rate = outer_rate_(tau(a / h_), sigma);
+  } else if (a > 0) {
+    // u = (a^2/R) [A - 1/2 + s2 V(tau, sigma)], s2 = sigma^2 = 1 - a/r; the rate du/dalpha at
+    // fixed r is (du/da) / (dalpha/da) of the same tables (the header).
+    const double l = a / h_, t = tau(l), s2 = 1 - a / r, sigma = std::sqrt(s2);
+    const double A = approach_ratio(l), A_a = slope(approach_, l) / h_;
+    const double V = outer_(t, sigma);
+    const double V_a = outer_.derivative_x(t, sigma) / (2 * std::max(t, 1e-8) * lambda_max_ * h_);
+    const double sigma_V_sigma = sigma * outer_.derivative_y(t, sigma);
+    d.u = a * a / R_ * (A - 0.5 + s2 * V);
+    const double du_da = 2 * a / R_ * (A - 0.5 + s2 * V) +
+                         a * a / R_ * (A_a + s2 * V_a - V / r - sigma_V_sigma / (2 * r));
+    const double dalpha_da = (2 * a * A + a * a * A_a) / R_;
+    d.rate = du_da / dalpha_da;
   }
   if (alpha < 0) d.u = -d.u;
   return d;

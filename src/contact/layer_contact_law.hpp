@@ -9,13 +9,16 @@
 // its derivative dF/dalpha = (dF/da) / (dalpha/da) from the same series (P is what the flat-punch
 // theorem says it must be: a check, not used), its energy int F dalpha by Gauss-Legendre over a.
 // The dent: inside the patch (r <= a) the face conforms to the sphere, u = alpha - r^2 / (2R),
-// rate 1; outside, u = (a^2 / R) U(lambda, sigma) and du/dalpha = W(lambda, sigma), the sphere's
-// and the unit flat punch's outer profiles, tabulated in sigma = (1 - a/r)^0.5 (their
-// square-root behaviour at the edge is smooth in sigma), U(., 0) = A - 1/2 and W(., 0) = 1
-// exactly, so u and its rate are continuous where a node enters the patch. The rate W is the
-// exact du/dalpha of the solution (the punch theorem again) and agrees with the tables'
-// derivative of u to their accuracy. Odd in alpha (force, dent) and even (stiffness, energy, rate)
-// as the power laws (local_contact_law.hpp). Units mm, N, MPa.
+// rate 1; outside, with s2 = sigma^2 = 1 - a/r,
+//     u = (a^2 / R) [A(lambda) - 1/2 + s2 V(tau, sigma)],
+// V a Chebyshev table of the sphere's outer profile (sphere_on_layer.hpp), smooth in sigma (the
+// profile's square-root terms cancel at the edge to O(s2^1.5)) and exactly -1 at sigma = 0, which
+// is the face's slope -a/R at r = a+: u is C^1 where a node enters the patch. The rate
+// du/dalpha is the derivative of the same table, (du/da) / (dalpha/da) at fixed r: the Jacobian
+// then holds the exact derivative of the residual, and the rate is exactly 1 at r = a. (It is the
+// unit flat punch's profile to the tables' accuracy, ~1e-3: Shield's theorem.) Odd in alpha
+// (force, dent) and even (stiffness, energy, rate) as the power laws (local_contact_law.hpp).
+// Units mm, N, MPa.
 #pragma once
 
 #include "contact/hertz_dent.hpp"
@@ -51,7 +54,7 @@ class LayerContactLaw {
   double slope(const ChebyshevSeries& f, double lambda) const;  // d f / d lambda
   double R_, h_, modulus_, lambda_max_;
   ChebyshevSeries approach_, force_, punch_;
-  ChebyshevTable2 outer_, outer_rate_;  // U and W in (tau, sigma)
+  ChebyshevTable2 outer_;  // V in (tau, sigma)
 };
 
 }  // namespace si

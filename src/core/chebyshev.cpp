@@ -27,6 +27,15 @@ Eigen::VectorXd chebyshev_coefficients(const Eigen::VectorXd& v) {
   return c;
 }
 
+// Coefficients of the derivative of sum c_k T_k(t): c'_{k-1} = c'_{k+1} + 2 k c_k, c'_0 halved.
+Eigen::VectorXd derivative_coefficients(const Eigen::VectorXd& c) {
+  const Eigen::Index n = c.size() - 1;
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(n + 2);
+  for (Eigen::Index k = n; k >= 1; --k) d[k - 1] = d[k + 1] + 2.0 * k * c[k];
+  d[0] /= 2;
+  return d.head(std::max<Eigen::Index>(n, 1));
+}
+
 double clenshaw(const Eigen::VectorXd& c, double t) {
   double b1 = 0, b2 = 0;
   for (Eigen::Index k = c.size() - 1; k >= 1; --k) {
@@ -55,12 +64,7 @@ ChebyshevSeries::ChebyshevSeries(double a, double b, const std::vector<double>& 
     : a_(a), b_(b) {
   SI_REQUIRE(values.size() >= 2 && b > a, "ChebyshevSeries: need two values and a < b");
   c_ = chebyshev_coefficients(Eigen::Map<const Eigen::VectorXd>(values.data(), values.size()));
-  // Derivative coefficients: c'_{k-1} = c'_{k+1} + 2 k c_k (c'_0 halved).
-  const Eigen::Index n = c_.size() - 1;
-  dc_ = Eigen::VectorXd::Zero(std::max<Eigen::Index>(n, 1));
-  for (Eigen::Index k = n; k >= 1; --k)
-    dc_[k - 1] = (k + 1 <= n - 1 ? dc_[k + 1] : 0.0) + 2.0 * k * c_[k];
-  dc_[0] /= 2;
+  dc_ = derivative_coefficients(c_);
 }
 
 double ChebyshevSeries::operator()(double x) const {
@@ -81,13 +85,38 @@ ChebyshevTable2::ChebyshevTable2(double ax, double bx, double ay, double by,
     rows.row(i) = chebyshev_coefficients(values.row(i).transpose()).transpose();
   c_.resize(values.rows(), values.cols());
   for (Eigen::Index j = 0; j < values.cols(); ++j) c_.col(j) = chebyshev_coefficients(rows.col(j));
+  cx_ = Eigen::MatrixXd::Zero(c_.rows(), c_.cols());
+  cy_ = Eigen::MatrixXd::Zero(c_.rows(), c_.cols());
+  for (Eigen::Index j = 0; j < c_.cols(); ++j) {
+    const Eigen::VectorXd d = derivative_coefficients(c_.col(j));
+    cx_.col(j).head(d.size()) = d;
+  }
+  for (Eigen::Index i = 0; i < c_.rows(); ++i) {
+    const Eigen::VectorXd d = derivative_coefficients(c_.row(i).transpose());
+    cy_.row(i).head(d.size()) = d.transpose();
+  }
 }
 
+namespace {
+
+double clenshaw2(const Eigen::MatrixXd& c, double tx, double ty) {
+  Eigen::VectorXd along_x(c.rows());
+  for (Eigen::Index i = 0; i < c.rows(); ++i) along_x[i] = clenshaw(c.row(i).transpose(), ty);
+  return clenshaw(along_x, tx);
+}
+
+}  // namespace
+
 double ChebyshevTable2::operator()(double x, double y) const {
-  const double ty = to_unit(y, ay_, by_);
-  Eigen::VectorXd along_x(c_.rows());
-  for (Eigen::Index i = 0; i < c_.rows(); ++i) along_x[i] = clenshaw(c_.row(i).transpose(), ty);
-  return clenshaw(along_x, to_unit(x, ax_, bx_));
+  return clenshaw2(c_, to_unit(x, ax_, bx_), to_unit(y, ay_, by_));
+}
+
+double ChebyshevTable2::derivative_x(double x, double y) const {
+  return clenshaw2(cx_, to_unit(x, ax_, bx_), to_unit(y, ay_, by_)) * 2 / (bx_ - ax_);
+}
+
+double ChebyshevTable2::derivative_y(double x, double y) const {
+  return clenshaw2(cy_, to_unit(x, ax_, bx_), to_unit(y, ay_, by_)) * 2 / (by_ - ay_);
 }
 
 }  // namespace si

@@ -37,10 +37,12 @@ class ChebyshevTable2 {
   ChebyshevTable2() = default;
   ChebyshevTable2(double ax, double bx, double ay, double by, const Eigen::MatrixXd& values);
   double operator()(double x, double y) const;
+  double derivative_x(double x, double y) const;
+  double derivative_y(double x, double y) const;
 
  private:
   double ax_ = 0, bx_ = 1, ay_ = 0, by_ = 1;
-  Eigen::MatrixXd c_;  // coefficients of T_i(x) T_j(y)
+  Eigen::MatrixXd c_, cx_, cy_;  // coefficients of T_i(x) T_j(y) of f, df/dx, df/dy (unit box)
 };
 
 }  // namespace si

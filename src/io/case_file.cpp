@@ -40,7 +40,14 @@ const Choices<ContactSolver> kSolvers{{"kinsol", ContactSolver::kKinsol},
 const Choices<LocalContactModel> kLocalModels{{"none", LocalContactModel::kNone},
                                               {"hertz", LocalContactModel::kHertz},
                                               {"yang_sun", LocalContactModel::kYangSun},
-                                              {"vam", LocalContactModel::kVam}};
+                                              {"vam", LocalContactModel::kVam},
+                                              {"anisotropic", LocalContactModel::kAnisotropic}};
+const Choices<LocalSupport> kLocalSupports{{"half_space", LocalSupport::kHalfSpace},
+                                           {"bonded", LocalSupport::kBondedBase},
+                                           {"frictionless", LocalSupport::kFrictionlessBase},
+                                           {"plate", LocalSupport::kPlate}};
+const Choices<LocalPlies> kLocalPlies{{"homogenised", LocalPlies::kHomogenised},
+                                      {"resolved", LocalPlies::kResolved}};
 const Choices<ContactTraction> kTractions{{"nodal", ContactTraction::kNodal},
                                           {"interpolated", ContactTraction::kInterpolated}};
 const Choices<PathMethod> kMethods{{"natural", PathMethod::kNatural},
@@ -184,10 +191,18 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics) {
   ContactSpec contact;
   const auto map = section(top, "contact");
   if (!map) return contact;
-  map->allow_only({"surface", "solver", "local", "traction", "fbar"});
+  map->allow_only(
+      {"surface", "solver", "local", "local_support", "local_plies", "traction", "fbar"});
   contact.surface = map->choice_or("surface", kSurfaces, contact.surface);
   contact.solver = map->choice_or("solver", kSolvers, contact.solver);
   contact.local = map->choice_or("local", kLocalModels, contact.local);
+  contact.local_support = map->choice_or("local_support", kLocalSupports, contact.local_support);
+  contact.local_plies = map->choice_or("local_plies", kLocalPlies, contact.local_plies);
+  for (const char* key : {"local_support", "local_plies"})
+    if (map->has(key) && contact.local != LocalContactModel::kAnisotropic)
+      throw_input(std::string("`") + key + "` chooses how `local: anisotropic` is built; set " +
+                      "`local: anisotropic` or remove it",
+                  map->where(key));
   contact.traction = map->choice_or("traction", kTractions, contact.traction);
   contact.fbar = map->choice_or("fbar", kBooleans, contact.fbar);
   if (contact.traction == ContactTraction::kInterpolated && kinematics != Kinematics::kLinear)
@@ -205,10 +220,11 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics) {
   // gaps the apex row, closed at first touch, supplies it, but the weighted gaps are all open
   // there and the Jacobian is singular (measured on studies/paper_option_cap.yaml).
   if (contact.traction == ContactTraction::kInterpolated &&
-      (contact.local == LocalContactModel::kHertz || contact.local == LocalContactModel::kYangSun))
+      (contact.local == LocalContactModel::kHertz || contact.local == LocalContactModel::kYangSun ||
+       contact.local == LocalContactModel::kAnisotropic))
     throw_input(
-        "a power-law local contact (hertz, yang_sun) is not available with the interpolated "
-        "traction; use `traction: nodal` or `local: none | vam`",
+        "a Hertz-type local contact (hertz, yang_sun, anisotropic) is not available with the "
+        "interpolated traction; use `traction: nodal` or `local: none | vam`",
         map->where("local"));
   return contact;
 }

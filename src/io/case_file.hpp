@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/local_support.hpp"
 #include "core/linalg.hpp"
 #include "material/material.hpp"
 #include "model/symmetry.hpp"
@@ -70,7 +71,7 @@ struct IndenterSpec {
 
 enum class ContactSurface { kOuter, kMid };
 enum class ContactSolver { kKinsol, kActiveSet };
-enum class LocalContactModel { kNone, kHertz, kYangSun, kVam };
+enum class LocalContactModel { kNone, kHertz, kYangSun, kVam, kAnisotropic };
 
 // Contact traction: nodal Lagrange multipliers (forces), or the paper's interpolated traction
 // with weighted gaps (analysis/interpolated_contact.hpp; linear kinematics only).
@@ -80,6 +81,9 @@ struct ContactSpec {
   ContactSurface surface = ContactSurface::kOuter;  // outer = top face of the laminate
   ContactSolver solver = ContactSolver::kKinsol;
   LocalContactModel local = LocalContactModel::kNone;
+  // local: anisotropic only (contact/local_support.hpp).
+  LocalSupport local_support = LocalSupport::kHalfSpace;
+  LocalPlies local_plies = LocalPlies::kHomogenised;
   ContactTraction traction = ContactTraction::kNodal;
   bool fbar = false;  // the paper's F-bar coupling term; needs traction: interpolated
 };

@@ -157,13 +157,36 @@ nlohmann::json events_json(const PathResult& result) {
 
 namespace {
 
-// contact.local and its constant (docs/theory/local-indentation.md).
+const char* local_support_name(LocalSupport s) {
+  switch (s) {
+    case LocalSupport::kBondedBase:
+      return "bonded";
+    case LocalSupport::kFrictionlessBase:
+      return "frictionless";
+    case LocalSupport::kPlate:
+      return "plate";
+    case LocalSupport::kHalfSpace:
+      break;
+  }
+  return "half_space";
+}
+
+// contact.local and its constants (docs/theory/local-indentation.md).
 nlohmann::json local_contact_json(const IndentationSetup& setup) {
   const LocalContactLaw& law = setup.problem->local_law();
-  nlohmann::json j = {{"law", local_contact_name(setup.case_file.contact.local)}};
+  const ContactSpec& contact = setup.case_file.contact;
+  nlohmann::json j = {{"law", local_contact_name(contact.local)}};
   if (law.kind == LocalLawKind::kPowerLaw) {
-    j["k_N_per_mm1.5"] = law.k;
+    j["k_N_per_mm1.5"] = law.k;        // finite thickness: its Hertz form at small alpha
     j["dent_radius_mm"] = law.radius;  // hertz_dent.hpp; 0: uniform approach
+  }
+  if (contact.local == LocalContactModel::kAnisotropic) {
+    j["support"] = local_support_name(contact.local_support);
+    j["plies"] = contact.local_plies == LocalPlies::kResolved ? "resolved" : "homogenised";
+  }
+  if (law.layer) {
+    j["modulus_MPa"] = law.layer->modulus();
+    j["layer_thickness_mm"] = law.layer->thickness();
   }
   if (law.kind == LocalLawKind::kThinLayer) j["c_L_mm_per_MPa"] = law.compliance;
   return j;

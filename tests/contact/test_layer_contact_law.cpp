@@ -159,7 +159,8 @@ TEST(LayerContactLaw, TablesMatchDirectSolutionsBetweenTheirNodes) {
       const SphereOnLayer::OuterFace face = contact.outer_face(s, {1 / r_over_a});
       const DentValue d = law.dent(r_over_a * a, alpha);
       EXPECT_NEAR(d.u, face.sphere[0] * a * a / law.radius(), 3e-5 * alpha) << lambda;
-      EXPECT_NEAR(d.rate, face.punch[0], 1e-4) << lambda;
+      // The rate, the tables' derivative of u, is the flat punch's profile (Shield) to a few 1e-3.
+      EXPECT_NEAR(d.rate, face.punch[0], 5e-3) << lambda;
     }
   }
 }
@@ -181,11 +182,10 @@ TEST(LayerContactLaw, ForceStiffnessEnergyInverseAndDentAreConsistent) {
     const DentValue in = law.dent(a * (1 - 1e-14), alpha), out = law.dent(a * (1 + 1e-14), alpha);
     EXPECT_NEAR(out.u, in.u, 1e-9 * alpha);
     EXPECT_NEAR(out.rate, 1.0, 1e-6);
-    // The rate's table against the derivative of u's: the two tables agree to their accuracy
-    // (the exact solutions to 1e-8: OuterDentRateIsTheFlatPunchsProfile).
-    for (double r : {1.3 * a, 2.5 * a}) {
+    // The rate is the derivative of u in alpha at fixed r (the Jacobian's dent rows).
+    for (double r : {1.001 * a, 1.3 * a, 2.5 * a}) {
       const double fd = (law.dent(r, alpha + d).u - law.dent(r, alpha - d).u) / (2 * d);
-      EXPECT_NEAR(law.dent(r, alpha).rate / fd, 1.0, 2e-3) << alpha << " " << r;
+      EXPECT_NEAR(law.dent(r, alpha).rate, fd, 1e-6 * std::max(fd, 1e-3)) << alpha << " " << r;
     }
   }
 }

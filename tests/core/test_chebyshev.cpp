@@ -42,8 +42,18 @@ TEST(ChebyshevTable2, AnalyticFunctionOfTwoVariables) {
   for (std::size_t i = 0; i < x.size(); ++i)
     for (std::size_t j = 0; j < y.size(); ++j) v(i, j) = g(x[i], y[j]);
   const ChebyshevTable2 t(0, 2, -1, 1, v);
+  const auto gx = [](double p, double q) {
+    return std::exp(p * q) * (q * std::cos(p - 2 * q) - std::sin(p - 2 * q));
+  };
+  const auto gy = [](double p, double q) {
+    return std::exp(p * q) * (p * std::cos(p - 2 * q) + 2 * std::sin(p - 2 * q));
+  };
   for (double a = 0; a <= 2; a += 0.137)
-    for (double b = -1; b <= 1; b += 0.173) EXPECT_NEAR(t(a, b), g(a, b), 1e-11);
+    for (double b = -1; b <= 1; b += 0.173) {
+      EXPECT_NEAR(t(a, b), g(a, b), 1e-11);
+      EXPECT_NEAR(t.derivative_x(a, b), gx(a, b), 1e-9);
+      EXPECT_NEAR(t.derivative_y(a, b), gy(a, b), 1e-9);
+    }
 }
 
 }  // namespace
