@@ -271,7 +271,7 @@ void IndentationProblem::build_pattern() {
   alpha_diagonal_ = u.local ? value_slot(jacobian_, u.alpha_index(), u.alpha_index()) : -1;
   // The Krylov solver condenses rows on one node's dofs: not the weighted rows, which span the
   // node's elements (the direct LU then). The local approach alpha, which couples every row,
-  // borders the matrix it solves (bordered_solve.hpp).
+  // borders the matrix it solves (contact_jacobian_solver.hpp).
   if (options_.linear_solver == kPreconditionedKrylov && !weighted_) {
     if (!krylov_)
       krylov_ =
@@ -296,7 +296,11 @@ int IndentationProblem::size() const {
 DentValue IndentationProblem::dent(int node, const cont::Vector& z) const {
   const UnknownLayout u = layout();
   if (!u.local) return {};
-  return options_.local.dent(dent_radius_[node], z[u.alpha_index()]);
+  // One profile per alpha: every candidate's gap at an iterate shares it.
+  const double alpha = z[u.alpha_index()];
+  if (!dent_profile_ || dent_profile_->alpha != alpha)
+    dent_profile_ = options_.local.dent_profile(alpha);
+  return dent_profile_->at(dent_radius_[node]);
 }
 
 double IndentationProblem::face_depth(int node, const cont::Vector& z, double h) const {
@@ -505,11 +509,8 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
       nonlinear ? chart_.to_chart_jacobian(z.head(nf), r_free, jacobian_)
                 : std::vector<ShellChart::RotationBlock>{};
   try {
-    bordered_lu_ = false;
-    if (krylov_ && u.local)
-      factorize_bordered(rotations, rows);
-    else if (krylov_)
-      krylov_->factorize(jacobian_, nf, rotations, rows);
+    if (krylov_)
+      krylov_->factorize(jacobian_, nf, rotations, rows, u.local);
     else
       solver_->factorize(jacobian_);  // the first factorization analyses the pattern
   } catch (const Error& e) {
@@ -519,34 +520,9 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   return true;
 }
 
-// The Krylov solver on J without alpha's row and column, alpha by block elimination
-// (bordered_solve.hpp); an LU of the whole J where the elimination's pivot vanishes.
-void IndentationProblem::factorize_bordered(const std::vector<ShellChart::RotationBlock>& rotations,
-                                            const std::vector<ContactJacobianRow>& rows) {
-  const UnknownLayout u = layout();
-  const int n = u.alpha_index(), nf = chart_.size();
-  inner_jacobian_ = jacobian_.topLeftCorner(n, n);
-  inner_jacobian_.makeCompressed();
-  Eigen::VectorXd column = Eigen::VectorXd::Zero(n), row = Eigen::VectorXd::Zero(n);
-  const double* J = jacobian_.valuePtr();
-  for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    column[nf + static_cast<int>(i)] = J[slots_[i].alpha_column];
-    row[nf + static_cast<int>(i)] = J[slots_[i].alpha_row];
-  }
-  krylov_->factorize(inner_jacobian_, nf, rotations, rows);
-  const auto inner = [this](const Eigen::VectorXd& x) { return krylov_->solve(x); };
-  if (bordered_.factorize(column, row, J[alpha_diagonal_], inner)) return;
-  if (!solver_) solver_ = make_linear_solver("umfpack");
-  solver_->factorize(jacobian_);
-  bordered_lu_ = true;
-}
-
 bool IndentationProblem::solve(cont::Vector& b) {
   ++counters_.solves;
-  if (krylov_ && layout().local && !bordered_lu_)
-    bordered_.solve(b, [this](const Eigen::VectorXd& x) { return krylov_->solve(x); });
-  else
-    b = krylov_ && !bordered_lu_ ? krylov_->solve(b) : solver_->solve(b);
+  b = krylov_ ? krylov_->solve(b) : solver_->solve(b);
   return b.allFinite();
 }
 

@@ -38,10 +38,10 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "analysis/bordered_solve.hpp"
 #include "analysis/chart_assembly.hpp"
 #include "analysis/contact_jacobian_solver.hpp"
 #include "analysis/interpolated_contact.hpp"
@@ -70,7 +70,8 @@ struct IndentationOptions {
   // The Jacobian's solver: kPreconditionedKrylov (contact_jacobian_solver.hpp; an LU of the
   // Jacobian where it cannot help) or a direct LU, "umfpack" | "klu" (the Jacobian is unsymmetric).
   // The interpolated traction's rows span several nodes: it uses the direct LU. A power-law
-  // local contact's unknown alpha borders the Krylov solver's matrix (bordered_solve.hpp).
+  // local contact's unknown alpha borders the Krylov solver's matrix
+  // (contact_jacobian_solver.hpp).
   std::string linear_solver = "cholesky_gmres";
   // kPreconditionedKrylov: GMRES stops at a relative residual of krylov_tolerance. The Newton
   // corrections need no more than 1e-6: an inexact Newton method with a constant forcing term
@@ -219,8 +220,6 @@ class IndentationProblem : public cont::Problem {
   struct WeightedGaps;
   void choose_candidates(const std::vector<int>& nodes);
   void measure_dent_radii(const std::vector<Vector3d>& points, int first);
-  void factorize_bordered(const std::vector<ShellChart::RotationBlock>& rotations,
-                          const std::vector<ContactJacobianRow>& rows);
   // The local law's dent at mesh node `node` and its rate d/dalpha (zero without a power law).
   DentValue dent(int node, const cont::Vector& z) const;
   void build_pattern();
@@ -262,25 +261,21 @@ class IndentationProblem : public cont::Problem {
   double touch_roundoff_ = 0;             // mm: a gap below it is a touch (complementarity())
   double kappa_ = 1;                      // N/mm
   std::vector<int> candidates_;
-  std::vector<NodeContactGeometry> geometry_;    // per mesh node
-  std::vector<double> tributary_area_;           // per mesh node, mm^2
-  std::vector<double> dent_radius_;              // per mesh node: r of the dent profile, mm
-  mutable std::vector<double> touch_guess_;      // per candidate: last s(p), a Newton guess
-  std::vector<std::vector<int>> neighbours_;     // per mesh node
-  std::vector<std::vector<int>> node_elements_;  // per mesh node: the elements containing it
-  std::vector<int> support_elements_;            // elements with a prescribed translation
+  std::vector<NodeContactGeometry> geometry_;        // per mesh node
+  std::vector<double> tributary_area_;               // per mesh node, mm^2
+  std::vector<double> dent_radius_;                  // per mesh node: r of the dent profile, mm
+  mutable std::optional<DentProfile> dent_profile_;  // the dent at the last alpha (dent())
+  mutable std::vector<double> touch_guess_;          // per candidate: last s(p), a Newton guess
+  std::vector<std::vector<int>> neighbours_;         // per mesh node
+  std::vector<std::vector<int>> node_elements_;      // per mesh node: the elements containing it
+  std::vector<int> support_elements_;                // elements with a prescribed translation
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
   std::vector<CandidateSlots> slots_;
   std::unique_ptr<WeightedGaps> weighted_;         // interpolated traction only
   std::unique_ptr<LinearSolver> solver_;           // a direct LU of the Jacobian, or
   std::unique_ptr<ContactJacobianSolver> krylov_;  // the preconditioned Krylov solver
-  // Power-law local contact with the Krylov solver: J without alpha's row and column, and the
-  // elimination of alpha (factorize_bordered); bordered_lu_: solver_ has the whole J instead.
-  SparseMatrix inner_jacobian_;
-  BorderedSolve bordered_;
-  bool bordered_lu_ = false;
-  int alpha_diagonal_ = -1;  // (alpha, alpha) with a power-law local contact
+  int alpha_diagonal_ = -1;                        // (alpha, alpha) with a power-law local contact
   IndentationCounters counters_;
   // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.
   cont::Vector cached_z_;

@@ -150,28 +150,43 @@ double LayerContactLaw::approach(double force) const {
 }
 
 DentValue LayerContactLaw::dent(double r, double alpha) const {
+  return dent_at(alpha).at(r);
+}
+
+LayerContactLaw::Dent LayerContactLaw::dent_at(double alpha) const {
+  Dent d;
+  d.depth_ = std::abs(alpha);
+  d.sign_ = alpha < 0 ? -1.0 : 1.0;
+  d.R_ = R_;
+  d.a_ = contact_radius(d.depth_);
+  if (d.a_ > 0) {
+    const double l = d.a_ / h_, t = tau(l);
+    d.A_ = approach_ratio(l);
+    d.A_a_ = slope(approach_, l) / h_;
+    d.V_ = outer_.slice(t);
+    d.V_a_ = outer_.slice_derivative_x(t, 1 / (2 * std::max(t, 1e-8) * lambda_max_ * h_));
+  }
+  return d;
+}
+
+// u = (a^2/R) [A - 1/2 + s2 V(tau, sigma)], s2 = sigma^2 = 1 - a/r; the rate du/dalpha at fixed r
+// is (du/da) / (dalpha/da) of the same tables (the header).
+DentValue LayerContactLaw::Dent::at(double r) const {
   SI_REQUIRE(r >= 0, "LayerContactLaw::dent: r must not be negative");
-  const double depth = std::abs(alpha);
-  const double a = contact_radius(depth);
   DentValue d;
-  if (r <= a) {
-    d.u = depth - r * r / (2 * R_);
+  if (r <= a_) {
+    d.u = depth_ - r * r / (2 * R_);
     d.rate = 1;
-  } else if (a > 0) {
-    // u = (a^2/R) [A - 1/2 + s2 V(tau, sigma)], s2 = sigma^2 = 1 - a/r; the rate du/dalpha at
-    // fixed r is (du/da) / (dalpha/da) of the same tables (the header).
-    const double l = a / h_, t = tau(l), s2 = 1 - a / r, sigma = std::sqrt(s2);
-    const double A = approach_ratio(l), A_a = slope(approach_, l) / h_;
-    const double V = outer_(t, sigma);
-    const double V_a = outer_.derivative_x(t, sigma) / (2 * std::max(t, 1e-8) * lambda_max_ * h_);
-    const double sigma_V_sigma = sigma * outer_.derivative_y(t, sigma);
-    d.u = a * a / R_ * (A - 0.5 + s2 * V);
-    const double du_da = 2 * a / R_ * (A - 0.5 + s2 * V) +
-                         a * a / R_ * (A_a + s2 * V_a - V / r - sigma_V_sigma / (2 * r));
-    const double dalpha_da = (2 * a * A + a * a * A_a) / R_;
+  } else if (a_ > 0) {
+    const double s2 = 1 - a_ / r, sigma = std::sqrt(s2);
+    const double V = V_(sigma), V_a = V_a_(sigma), sigma_V_sigma = sigma * V_.derivative(sigma);
+    d.u = a_ * a_ / R_ * (A_ - 0.5 + s2 * V);
+    const double du_da = 2 * a_ / R_ * (A_ - 0.5 + s2 * V) +
+                         a_ * a_ / R_ * (A_a_ + s2 * V_a - V / r - sigma_V_sigma / (2 * r));
+    const double dalpha_da = (2 * a_ * A_ + a_ * a_ * A_a_) / R_;
     d.rate = du_da / dalpha_da;
   }
-  if (alpha < 0) d.u = -d.u;
+  d.u *= sign_;
   return d;
 }
 

@@ -43,6 +43,20 @@ class LayerContactLaw {
   double approach(double force) const;        // alpha(F), mm
   DentValue dent(double r, double alpha) const;
 
+  // The dent at one approach for many r (every node's gap at one Newton iterate): the contact
+  // radius and the tables' slice at it computed once.
+  class Dent {
+   public:
+    DentValue at(double r) const;
+
+   private:
+    friend class LayerContactLaw;
+    double depth_ = 0, sign_ = 1, a_ = 0, R_ = 1;
+    double A_ = 1, A_a_ = 0;   // A(lambda) and dA/da at a
+    ChebyshevSeries V_, V_a_;  // V(tau(a), .) and dV/da(tau(a), .), series in sigma
+  };
+  Dent dent_at(double alpha) const;
+
   // The tables at lambda = a / h in [0, max_radius_over_h]: A, B, P of the header.
   double approach_ratio(double lambda) const;
   double force_ratio(double lambda) const;

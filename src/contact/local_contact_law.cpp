@@ -27,7 +27,19 @@ double LocalContactLaw::approach(double force) const {
 }
 
 DentValue LocalContactLaw::dent(double r, double alpha) const {
-  if (layer) return layer->dent(r, alpha);
+  return dent_profile(alpha).at(r);
+}
+
+DentProfile LocalContactLaw::dent_profile(double alpha) const {
+  DentProfile p;
+  p.alpha = alpha;
+  p.radius = radius;
+  if (layer) p.layer = layer->dent_at(alpha);
+  return p;
+}
+
+DentValue DentProfile::at(double r) const {
+  if (layer) return layer->at(r);
   if (radius > 0) return hertz_dent(r, alpha, radius);
   return {alpha, 1.0};
 }

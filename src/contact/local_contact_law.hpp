@@ -16,6 +16,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "contact/hertz_dent.hpp"
 #include "contact/layer_contact_law.hpp"
@@ -23,6 +24,15 @@
 namespace si {
 
 enum class LocalLawKind { kNone, kPowerLaw, kThinLayer };
+
+// A power law's dent at one approach alpha, for the many r of one Newton iterate (a
+// finite-thickness law's per-alpha work, its contact radius and table slice, done once).
+struct DentProfile {
+  double alpha = 0;
+  double radius = 0;  // Hertz's R; 0: the uniform approach alpha
+  std::optional<LayerContactLaw::Dent> layer;
+  DentValue at(double r) const;
+};
 
 struct LocalContactLaw {
   LocalLawKind kind = LocalLawKind::kNone;
@@ -45,6 +55,7 @@ struct LocalContactLaw {
   // contact axis and its rate d/dalpha: hertz_dent(r, alpha, radius), or alpha and 1 without a
   // radius (a rigid approach of the whole face).
   DentValue dent(double r, double alpha) const;
+  DentProfile dent_profile(double alpha) const;
 };
 
 // Rigid indenter: pass indenter_E = 0 (its compliance term is then zero).

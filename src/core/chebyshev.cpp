@@ -67,6 +67,14 @@ ChebyshevSeries::ChebyshevSeries(double a, double b, const std::vector<double>& 
   dc_ = derivative_coefficients(c_);
 }
 
+ChebyshevSeries ChebyshevSeries::from_coefficients(double a, double b, const Eigen::VectorXd& c) {
+  SI_REQUIRE(c.size() >= 1 && b > a, "ChebyshevSeries: need a coefficient and a < b");
+  ChebyshevSeries s;
+  s.a_ = a, s.b_ = b, s.c_ = c;
+  s.dc_ = derivative_coefficients(c);
+  return s;
+}
+
 double ChebyshevSeries::operator()(double x) const {
   return clenshaw(c_, to_unit(x, a_, b_));
 }
@@ -109,6 +117,26 @@ double clenshaw2(const Eigen::MatrixXd& c, double tx, double ty) {
 
 double ChebyshevTable2::operator()(double x, double y) const {
   return clenshaw2(c_, to_unit(x, ax_, bx_), to_unit(y, ay_, by_));
+}
+
+namespace {
+
+// sum_i c(i, j) T_i(tx) per j: the coefficients of the series in y at x.
+Eigen::VectorXd collapse_x(const Eigen::MatrixXd& c, double tx) {
+  Eigen::VectorXd out(c.cols());
+  for (Eigen::Index j = 0; j < c.cols(); ++j) out[j] = clenshaw(c.col(j), tx);
+  return out;
+}
+
+}  // namespace
+
+ChebyshevSeries ChebyshevTable2::slice(double x) const {
+  return ChebyshevSeries::from_coefficients(ay_, by_, collapse_x(c_, to_unit(x, ax_, bx_)));
+}
+
+ChebyshevSeries ChebyshevTable2::slice_derivative_x(double x, double scale) const {
+  return ChebyshevSeries::from_coefficients(
+      ay_, by_, collapse_x(cx_, to_unit(x, ax_, bx_)) * (scale * 2 / (bx_ - ax_)));
 }
 
 double ChebyshevTable2::derivative_x(double x, double y) const {

@@ -19,6 +19,8 @@ class ChebyshevSeries {
   ChebyshevSeries() = default;
   // values[j] at chebyshev_points(a, b, n)[j], n = values.size() - 1 >= 1.
   ChebyshevSeries(double a, double b, const std::vector<double>& values);
+  // From the coefficients of T_k((2x - a - b)/(b - a)) instead of values.
+  static ChebyshevSeries from_coefficients(double a, double b, const Eigen::VectorXd& c);
   double operator()(double x) const;
   double derivative(double x) const;
   double lower() const { return a_; }
@@ -39,6 +41,9 @@ class ChebyshevTable2 {
   double operator()(double x, double y) const;
   double derivative_x(double x, double y) const;
   double derivative_y(double x, double y) const;
+  // f(x, .) and scale df/dx(x, .) as series in y: the work in x done once for many y.
+  ChebyshevSeries slice(double x) const;
+  ChebyshevSeries slice_derivative_x(double x, double scale = 1.0) const;
 
  private:
   double ax_ = 0, bx_ = 1, ay_ = 0, by_ = 1;

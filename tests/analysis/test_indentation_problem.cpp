@@ -166,7 +166,7 @@ TEST(IndentationProblem, ThinLayerLocalLaw_JacobianMatchesFiniteDifferences) {
 TEST(IndentationProblem, HertzDentRows_JacobianMatchesFiniteDifferencesInsideAndOutsideThePatch) {
   const CaseFile c = coarse_cap_case("linear", "[45/-45]2S");
   {
-    IndentationFixture f(c, with_local(kHertz));
+    IndentationFixture f(c, exact_solves(with_local(kHertz)));
     const double a = std::sqrt(kHertz.radius * 0.5);
     int inside = 0, outside = 0;
     for (int n : f.problem->candidates()) {
@@ -181,7 +181,8 @@ TEST(IndentationProblem, HertzDentRows_JacobianMatchesFiniteDifferencesInsideAnd
   }
   LocalContactLaw uniform = kHertz;
   uniform.radius = 0;
-  IndentationFixture f(coarse_cap_case("nonlinear", "[0/90]2S", "quarter"), with_local(uniform));
+  IndentationFixture f(coarse_cap_case("nonlinear", "[0/90]2S", "quarter"),
+                       exact_solves(with_local(uniform)));
   expect_jacobian_matches_fd(*f.problem, 0.3, 0.5);
 }
 
@@ -194,7 +195,7 @@ TEST(IndentationProblem, AnisotropicPlateLaw_JacobianMatchesFiniteDifferences) {
   const CaseFile c = coarse_cap_case("linear", "[0/90]2S");
   const LocalContactLaw law =
       anisotropic_local_law(c.laminate, {LocalSupport::kPlate, LocalPlies::kResolved, 10.98, 0.0});
-  IndentationFixture f(c, with_local(law));
+  IndentationFixture f(c, exact_solves(with_local(law)));
   expect_jacobian_matches_fd(*f.problem, 0.3, 0.5);
   IndentationFixture g(coarse_cap_case("nonlinear", "[0/90]2S", "quarter"),
                        exact_solves(with_local(law)));
