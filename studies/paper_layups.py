@@ -42,6 +42,8 @@ VARIANTS = {
     "mid": ("paper_layups_mid.yaml", "contact on the mid-surface (the paper's choice)"),
     "quarter": ("paper_layups_quarter.yaml", "quarter model (specially orthotropic lay-ups only)"),
     "bernstein4": ("paper_layups_bernstein4.yaml", "the paper's Bernstein element (bernstein4)"),
+    "local": ("paper_layups_local.yaml",
+              "local indentation in series (contact.local: anisotropic, plate support)"),
 }
 
 GRID_STEP_MM = 0.1  # path.step of the studies: the paper's depth grid (P9)

@@ -18,21 +18,22 @@ constexpr int kTransformDegree = 160;  // and of its cosine transform in y (y_ma
 // the top ten percent of it) the support is the top layer's half-space to far below 1e-12: kappa
 // is then the plate's Poisson term alone (0 for the layers), instead of 400 + transfer steps.
 constexpr double kFarField = 400;
+// int_0^inf kappa cos(x y) dx is taken over [0, 60] (kappa decays exponentially for the layers
+// and like x^-3 for the plate: the tail is below 1e-5 of the integral), then sampled at 200
+// points per unit of y for the Hermite interpolation.
 constexpr double kTransformRange = 60;
-constexpr double kTransformSamplesPerUnit =
-    200;  // int_0^inf kappa cos(x y) dx taken over [0, 60]:
-          // kappa decays exponentially for the layers and like
-          // x^-3 for the plate (tail below 1e-5 of the integral)
+constexpr double kTransformSamplesPerUnit = 200;
 
 Vector3d direction(double phi) {
   return Vector3d(std::cos(phi), std::sin(phi), 0);
 }
 
-// Plane-stress in-plane stiffness Q and the thickness strain per in-plane strain, nu, of a layer
-// (Voigt in-plane [e11, e22, g12], out-of-plane [33, 23, 13]) for the strain v = e e.
+// A layer under the in-plane strain v = e e (Voigt [e11, e22, g12]) with the out-of-plane
+// stresses zero (plate bending): its plane-stress stiffness along e and its thickness strain,
+// e33 = -nu (the strain along e).
 struct PlaneStress {
-  double Q = 0;   // v^T Q v
-  double nu = 0;  // e33 = -nu x (the bending strain along e)... as a positive ratio
+  double Q = 0;   // v^T Q v, Q = C_pp - C_pt C_tt^-1 C_tp
+  double nu = 0;  // [C_tt^-1 C_tp v]_33
 };
 
 PlaneStress plane_stress(const Matrix6d& C, double phi) {
@@ -47,7 +48,7 @@ PlaneStress plane_stress(const Matrix6d& C, double phi) {
     }
   const Vector3d e = direction(phi);
   const Vector3d v(e[0] * e[0], e[1] * e[1], 2 * e[0] * e[1]);
-  const Vector3d out_of_plane = Ctt.inverse() * Ctp * v;  // e_t = -this per unit e_p = v
+  const Vector3d out_of_plane = Ctt.inverse() * Ctp * v;  // e_t = -this for e_p = v
   PlaneStress s;
   s.Q = v.dot((Cpp - Cpt * Ctt.inverse() * Ctp) * v);
   s.nu = out_of_plane[0];
