@@ -10,7 +10,8 @@
 //    of the indenter's contact, with nodal gaps (nodal_gaps.hpp) or the paper's weighted gaps
 //    and interpolated traction (weighted_gaps.hpp), and a local law: a power law's approach alpha
 //    (power_law_approach.hpp) or a thin layer (thin_layer.hpp). contact_terms.cpp chooses them;
-//  * the Jacobian's solver, chosen once (jacobian_solver.hpp).
+//  * the Jacobian's solver, chosen once (jacobian_solver.hpp); a power law's alpha borders the
+//    Krylov solver's matrix.
 // Unknowns z = [x ; the terms' unknowns, in order] (today [x ; lambda ; alpha]); the Jacobian is
 // exact (generalised, at the kinks of the NCP function):
 //     [ K - sum lambda_i dG_i    -G ]      then, for nonlinear kinematics, the chart transform
@@ -127,6 +128,7 @@ class IndentationProblem : public cont::Problem {
   double kappa_ = 1;  // N/mm
   ContactParts parts_;
   ContactRows* contact_ = nullptr;  // the indenter's contact rows (in parts_)
+  int border_ = 0;                  // bordering unknowns at the end of z (ContactTerm::borders)
   std::unique_ptr<JacobianSolver> solver_;
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
