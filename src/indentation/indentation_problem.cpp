@@ -184,12 +184,16 @@ double IndentationProblem::force_scale(const cont::Vector& z) const {
 }
 
 double IndentationProblem::inner(const cont::Vector& a, const cont::Vector& b) const {
-  const int nf = shell_.size(), local = layout().local;
-  const Eigen::Index nc = a.size() - nf - local;
+  // By the layout, not by counting from the end: the multipliers sit between x and alpha.
+  const UnknownLayout u = layout();
+  const int lambda = u.lambda_begin(), nc = u.multipliers;
   // alpha (mm) counts as one more shell coordinate.
-  double shell = (a.head(nf).dot(b.head(nf)) + a.tail(local).dot(b.tail(local))) / nf;
-  if (nc > 0) shell += a.tail(nc).dot(b.tail(nc)) / (static_cast<double>(nc) * kappa_ * kappa_);
-  return shell;
+  double sum = (a.head(u.shell).dot(b.head(u.shell)) + a.tail(u.local).dot(b.tail(u.local))) /
+               static_cast<double>(u.shell + u.local);
+  if (nc > 0)
+    sum += a.segment(lambda, nc).dot(b.segment(lambda, nc)) /
+           (static_cast<double>(nc) * kappa_ * kappa_);
+  return sum;
 }
 
 std::vector<std::string> IndentationProblem::monitor_names() const {

@@ -59,9 +59,10 @@ class IndentationProblem : public cont::Problem {
   bool factorize(const cont::Vector& z, double h) override;
   bool solve(cont::Vector& b) override;
   bool residual_p(const cont::Vector& z, double h, cont::Vector& out) override;
-  // Arclength metric: mean square of the shell coordinates (mm, rad; alpha counts as one more)
-  // plus the mean square of the multipliers over kappa (mm), so that with parameter weight 1 an
-  // arclength step is about a depth step (each shell point moves at most as much as the indenter).
+  // Arclength metric: mean square of the shell coordinates (mm, rad; a power law's alpha counts
+  // as one more) plus the mean square of the indenter's multipliers over kappa (mm), so that with
+  // parameter weight 1 an arclength step is about a depth step (each shell point moves at most as
+  // much as the indenter).
   double inner(const cont::Vector& a, const cont::Vector& b) const override;
   std::vector<std::string> monitor_names() const override;
   // The monitors need no assembly (the continuation evaluates them off the branch too).

@@ -196,6 +196,41 @@ TEST(IndentationProblem, ThinLayerLocalLaw_JacobianMatchesFiniteDifferences) {
   expect_jacobian_matches_fd(*f.problem, 0.3);
 }
 
+// The arclength metric (inner()): the mean square of the shell coordinates, a power law's alpha
+// counting as one more, plus the mean square of every multiplier over kappa (mm), whatever local
+// law is present: each unit vector has its documented weight, and different unknowns do not mix.
+TEST(IndentationProblem, ArclengthMetric_WeighsTheShellAlphaAndEveryMultiplier) {
+  for (const IndentationOptions& o :
+       {IndentationOptions{}, with_local(kHertz), with_local(kThinLayer)}) {
+    IndentationFixture f(coarse_cap_case("linear", "[0/90]2S"), o);
+    const IndentationProblem& p = *f.problem;
+    const UnknownLayout u = p.layout();
+    ASSERT_GT(u.multipliers, 1);
+    const double kappa = p.stiffness_scale();
+    const double shell_weight = 1.0 / (u.shell + u.local);
+    const double multiplier_weight = 1.0 / (u.multipliers * kappa * kappa);
+    std::vector<std::pair<int, double>> probes = {
+        {0, shell_weight},
+        {u.shell - 1, shell_weight},
+        {u.lambda_begin(), multiplier_weight},
+        {u.lambda_begin() + u.multipliers - 1, multiplier_weight}};
+    if (u.local) probes.emplace_back(u.alpha_index(), shell_weight);
+    const auto unit = [&](int i) {
+      cont::Vector e = cont::Vector::Zero(p.size());
+      e[i] = 1;
+      return e;
+    };
+    for (const auto& [i, weight] : probes) {
+      EXPECT_NEAR(p.inner(unit(i), unit(i)), weight, 1e-12 * weight) << "unknown " << i;
+      for (const auto& probe : probes) {
+        const int j = probe.first;
+        if (j == i) continue;
+        EXPECT_EQ(p.inner(unit(i), unit(j)), 0.0) << i << ", " << j;
+      }
+    }
+  }
+}
+
 // The dent's rows (hertz_dent.hpp): d g_i / d alpha = du/dalpha, 1 inside the patch and
 // (2/pi) asin(a/r) outside. At alpha = 0.5 mm the patch radius (R alpha)^0.5 = 2.52 mm spans
 // the 2 mm apex ring of the coarse cap and the rows beyond it are outside; the same with
