@@ -66,6 +66,10 @@ class ContactTerm {
   // Whether its rows can join the Krylov solver's condensed preconditioner (rows on one node's
   // dofs, no coupling to other rows); otherwise the problem uses a direct LU.
   virtual bool condensable() const { return false; }
+  // Whether its one unknown, whose row and column couple every contact row (a power law's
+  // alpha), may instead border the Krylov solver's matrix: GMRES keeps it and the preconditioner
+  // eliminates it by block elimination (contact_jacobian_solver.hpp). Such a term comes last in z.
+  virtual bool borders() const { return false; }
 
   // Its active constraints appended to the problem's signature (1 active, 0 not).
   virtual void signature(const TermPoint&, std::vector<int>&) const {}

@@ -32,8 +32,14 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
   parts_ = make_contact_parts(
       options_, ContactRowsSetting{shell_, body_, kappa_, options_.ncp, options_.candidate_depth});
   contact_ = parts_.indenter;
-  const bool condensable = std::all_of(parts_.terms.begin(), parts_.terms.end(),
-                                       [](const auto& t) { return t->condensable(); });
+  // Bordering terms come last (contact_term.hpp); the Krylov solver takes one bordering unknown.
+  for (const auto& t : parts_.terms)
+    if (t->borders()) border_ += t->size();
+  SI_REQUIRE(parts_.terms.back()->borders() || border_ == 0,
+             "indentation: a bordering contact term must be the last");
+  const bool condensable =
+      border_ <= 1 && std::all_of(parts_.terms.begin(), parts_.terms.end(),
+                                  [](const auto& t) { return t->condensable() || t->borders(); });
   solver_ =
       make_jacobian_solver(options_.linear_solver, condensable, kappa_, options_.krylov_tolerance);
   lay_out();
@@ -150,7 +156,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   const std::vector<ShellChart::RotationBlock> rotations =
       shell_.to_chart(z.head(nf), r_free, jacobian_);
   try {
-    solver_->factorize(jacobian_, nf, rotations, rows);
+    solver_->factorize(jacobian_, nf, rotations, rows, border_);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
@@ -178,12 +184,16 @@ double IndentationProblem::force_scale(const cont::Vector& z) const {
 }
 
 double IndentationProblem::inner(const cont::Vector& a, const cont::Vector& b) const {
-  const int nf = shell_.size(), local = layout().local;
-  const Eigen::Index nc = a.size() - nf - local;
+  // By the layout, not by counting from the end: the multipliers sit between x and alpha.
+  const UnknownLayout u = layout();
+  const int lambda = u.lambda_begin(), nc = u.multipliers;
   // alpha (mm) counts as one more shell coordinate.
-  double shell = (a.head(nf).dot(b.head(nf)) + a.tail(local).dot(b.tail(local))) / nf;
-  if (nc > 0) shell += a.tail(nc).dot(b.tail(nc)) / (static_cast<double>(nc) * kappa_ * kappa_);
-  return shell;
+  double sum = (a.head(u.shell).dot(b.head(u.shell)) + a.tail(u.local).dot(b.tail(u.local))) /
+               static_cast<double>(u.shell + u.local);
+  if (nc > 0)
+    sum += a.segment(lambda, nc).dot(b.segment(lambda, nc)) /
+           (static_cast<double>(nc) * kappa_ * kappa_);
+  return sum;
 }
 
 std::vector<std::string> IndentationProblem::monitor_names() const {

@@ -10,7 +10,8 @@
 //    of the indenter's contact, with nodal gaps (nodal_gaps.hpp) or the paper's weighted gaps
 //    and interpolated traction (weighted_gaps.hpp), and a local law: a power law's approach alpha
 //    (power_law_approach.hpp) or a thin layer (thin_layer.hpp). contact_terms.cpp chooses them;
-//  * the Jacobian's solver, chosen once (jacobian_solver.hpp).
+//  * the Jacobian's solver, chosen once (jacobian_solver.hpp); a power law's alpha borders the
+//    Krylov solver's matrix.
 // Unknowns z = [x ; the terms' unknowns, in order] (today [x ; lambda ; alpha]); the Jacobian is
 // exact (generalised, at the kinks of the NCP function):
 //     [ K - sum lambda_i dG_i    -G ]      then, for nonlinear kinematics, the chart transform
@@ -58,9 +59,10 @@ class IndentationProblem : public cont::Problem {
   bool factorize(const cont::Vector& z, double h) override;
   bool solve(cont::Vector& b) override;
   bool residual_p(const cont::Vector& z, double h, cont::Vector& out) override;
-  // Arclength metric: mean square of the shell coordinates (mm, rad; alpha counts as one more)
-  // plus the mean square of the multipliers over kappa (mm), so that with parameter weight 1 an
-  // arclength step is about a depth step (each shell point moves at most as much as the indenter).
+  // Arclength metric: mean square of the shell coordinates (mm, rad; a power law's alpha counts
+  // as one more) plus the mean square of the indenter's multipliers over kappa (mm), so that with
+  // parameter weight 1 an arclength step is about a depth step (each shell point moves at most as
+  // much as the indenter).
   double inner(const cont::Vector& a, const cont::Vector& b) const override;
   std::vector<std::string> monitor_names() const override;
   // The monitors need no assembly (the continuation evaluates them off the branch too).
@@ -127,6 +129,7 @@ class IndentationProblem : public cont::Problem {
   double kappa_ = 1;  // N/mm
   ContactParts parts_;
   ContactRows* contact_ = nullptr;  // the indenter's contact rows (in parts_)
+  int border_ = 0;                  // bordering unknowns at the end of z (ContactTerm::borders)
   std::unique_ptr<JacobianSolver> solver_;
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_

@@ -225,10 +225,19 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics,
   ContactSpec contact;
   const auto map = section(top, "contact");
   if (!map) return contact;
-  map->allow_only({"surface", "solver", "local", "traction", "fbar"});
+  map->allow_only(
+      {"surface", "solver", "local", "local_support", "local_plies", "traction", "fbar"});
   contact.surface = map->choice_or("surface", kSurfaces, contact.surface);
   contact.solver = map->choice_or("solver", kSolvers, contact.solver);
   contact.local = map->choice_or("local", local_contact_spellings(), contact.local);
+  contact.local_support =
+      map->choice_or("local_support", local_support_spellings(), contact.local_support);
+  contact.local_plies = map->choice_or("local_plies", local_plies_spellings(), contact.local_plies);
+  for (const char* key : {"local_support", "local_plies"})
+    if (map->has(key) && contact.local != LocalContactModel::kAnisotropic)
+      throw_input(std::string("`") + key + "` chooses how `local: anisotropic` is built; set " +
+                      "`local: anisotropic` or remove it",
+                  map->where(key));
   contact.traction = map->choice_or("traction", kTractions, contact.traction);
   contact.fbar = map->choice_or("fbar", kBooleans, contact.fbar);
   if (contact.traction == ContactTraction::kInterpolated && kinematics != Kinematics::kLinear)
@@ -246,14 +255,15 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics,
   // gaps the apex row, closed at first touch, supplies it, but the weighted gaps are all open
   // there and the Jacobian is singular (measured on studies/paper_option_cap.yaml).
   if (contact.traction == ContactTraction::kInterpolated &&
-      (contact.local == LocalContactModel::kHertz || contact.local == LocalContactModel::kYangSun))
+      (contact.local == LocalContactModel::kHertz || contact.local == LocalContactModel::kYangSun ||
+       contact.local == LocalContactModel::kAnisotropic))
     throw_input(
-        "a power-law local contact (hertz, yang_sun) is not available with the interpolated "
-        "traction; use `traction: nodal` or `local: none | vam`",
+        "a Hertz-type local contact (hertz, yang_sun, anisotropic) is not available with the "
+        "interpolated traction; use `traction: nodal` or `local: none | vam`",
         map->where("local"));
   // Hertz's dent profile (contact/hertz_dent.hpp) is defined for a sphere only.
-  if ((contact.local == LocalContactModel::kHertz ||
-       contact.local == LocalContactModel::kYangSun) &&
+  if ((contact.local == LocalContactModel::kHertz || contact.local == LocalContactModel::kYangSun ||
+       contact.local == LocalContactModel::kAnisotropic) &&
       indenter.shape != IndenterShape::kSphere)
     throw_input("a Hertz-type local law needs a spherical indenter", map->where("local"));
   return contact;

@@ -149,13 +149,22 @@ nlohmann::json events_json(const PathResult& result) {
 
 namespace {
 
-// contact.local and its constant (docs/theory/local-indentation.md).
+// contact.local and its constants (docs/theory/local-indentation.md).
 nlohmann::json local_contact_json(const IndentationSetup& setup) {
   const LocalContactLaw& law = setup.problem->local_law();
-  nlohmann::json j = {{"law", spelling(local_contact_spellings(), setup.spec.contact.local)}};
+  const ContactSpec& contact = setup.spec.contact;
+  nlohmann::json j = {{"law", spelling(local_contact_spellings(), contact.local)}};
   if (law.kind == LocalLawKind::kPowerLaw) {
-    j["k_N_per_mm1.5"] = law.k;
+    j["k_N_per_mm1.5"] = law.k;        // finite thickness: its Hertz form at small alpha
     j["dent_radius_mm"] = law.radius;  // hertz_dent.hpp; 0: uniform approach
+  }
+  if (contact.local == LocalContactModel::kAnisotropic) {
+    j["support"] = spelling(local_support_spellings(), contact.local_support);
+    j["plies"] = spelling(local_plies_spellings(), contact.local_plies);
+  }
+  if (law.layer) {
+    j["modulus_MPa"] = law.layer->modulus();
+    j["layer_thickness_mm"] = law.layer->thickness();
   }
   if (law.kind == LocalLawKind::kThinLayer) j["c_L_mm_per_MPa"] = law.compliance;
   return j;

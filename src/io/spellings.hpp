@@ -11,8 +11,13 @@
 
 namespace si {
 
-const Choices<LocalContactModel>& local_contact_spellings();  // none, hertz, yang_sun, vam
-const Choices<Kinematics>& kinematics_spellings();            // linear, nonlinear
+// none, hertz, yang_sun, vam, anisotropic
+const Choices<LocalContactModel>& local_contact_spellings();
+// local: anisotropic's support (half_space, bonded, frictionless, plate) and plies (homogenised,
+// resolved)
+const Choices<LocalSupport>& local_support_spellings();
+const Choices<LocalPlies>& local_plies_spellings();
+const Choices<Kinematics>& kinematics_spellings();  // linear, nonlinear
 
 // The spelling of `value` in `choices` (the first, if several spell it).
 template <class E>
