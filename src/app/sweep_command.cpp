@@ -20,6 +20,7 @@
 #include <sstream>
 
 #include "analysis/path_columns.hpp"
+#include "app/damage_summary.hpp"
 #include "app/thread_count.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -273,6 +274,7 @@ json summarize(const StudyCase& c, const fs::path& dir, const StudyFile& study) 
     row[std::string("critical_") + k + "_depth_mm"] = at_depth;
     row[std::string("critical_") + k + "_force_N"] = at_force;
   }
+  summarize_damage(*path, row);
   if (study.has_fit) {
     const json grid = grid_points(dir);
     fit_contact_law(grid.empty() ? pts : grid, study.fit, c.case_file.path.step, row);
@@ -280,7 +282,7 @@ json summarize(const StudyCase& c, const fs::path& dir, const StudyFile& study) 
   return row;
 }
 
-std::vector<std::string> columns(const StudyFile& study) {
+std::vector<std::string> columns(const StudyFile& study, const std::vector<StudyCase>& cases) {
   std::vector<std::string> cols{"case"};
   for (const auto& kv : study.vary) cols.push_back(kv.first);
   for (const char* c :
@@ -288,6 +290,7 @@ std::vector<std::string> columns(const StudyFile& study) {
         "depth_at_max_force_mm", "energy_end_Nmm", "critical_k11_depth_mm", "critical_k11_force_N",
         "critical_k22_depth_mm", "critical_k22_force_N"})
     cols.push_back(c);
+  for (const std::string& c : damage_columns(cases)) cols.push_back(c);
   if (study.has_fit)
     for (const char* c : {"fit_status", "C1", "C1_lo", "C1_hi", "C2", "C2_lo", "C2_hi", "R2"})
       cols.push_back(c);
@@ -371,7 +374,7 @@ int run_sweep_command(const SweepCommandOptions& o, std::ostream& out, std::ostr
     rows.push_back(summarize(c, case_root / c.slug, study));
     failed += finished(rows.back()["status"].get<std::string>()) ? 0 : 1;
   }
-  const std::vector<std::string> cols = columns(study);
+  const std::vector<std::string> cols = columns(study, cases);
   const std::string csv = sweep_csv(cols, rows);
   write_file_atomically((root / "sweep.csv").string(), csv);
   const json doc{{"study", study.file},
