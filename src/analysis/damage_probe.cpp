@@ -95,13 +95,23 @@ DamageProbe::DamageProbe(const ShellModel& model, const Assembler& assembler,
     Patch p;
     const Vector3d& x = model.mesh.nodes[monitored_[k]];
     const auto [t1, t2] = tangent_axes(model.mesh.directors[monitored_[k]]);
+    std::vector<Vector2d> coords;
     for (int n : nearest[k]) {
       p.rows.push_back(row[n]);
       const Vector3d d = model.mesh.nodes[n] - x;
-      p.coords.emplace_back(d.dot(t1), d.dot(t2));
+      coords.emplace_back(d.dot(t1), d.dot(t2));
     }
+    const int count = static_cast<int>(coords.size());
+    const PatchFit unit = fit_patch(coords, Eigen::MatrixXd::Identity(count, count),
+                                    Vector2d::Zero(), kPatchDegree, count);
+    p.fit.resize(10, count);
+    p.fit.row(0) = unit.value.transpose();
+    for (int i = 0; i < 2; ++i) p.fit.row(1 + i) = unit.d1[i].transpose();
+    for (int i = 0; i < 3; ++i) p.fit.row(3 + i) = unit.d2[i].transpose();
+    for (int i = 0; i < 4; ++i) p.fit.row(6 + i) = unit.d3[i].transpose();
     patches_.push_back(std::move(p));
   }
+  build_recovery_map();
   for (int e = 0; e < model.mesh.num_elements(); ++e)
     for (int n : model.mesh.elements[e])
       if (row[n] >= 0) {
@@ -143,28 +153,84 @@ std::vector<double> DamageProbe::monitored_pressures(const ProbePoint& point) co
   return p;
 }
 
+namespace {
+
+// The number of recovery inputs (recovery_map_'s columns): R, R,1, R,2, then (refined) R,11
+// R,12 R,22 R,111 R,112 R,122 R,222 (Patch::fit's rows), then t+ and t-.
+int recovery_inputs(StressRecovery recovery) {
+  return (recovery == StressRecovery::kRefined ? 10 : 3) * 6 + 2;
+}
+
+// A unit input j (recovery_inputs' order) as a plate state.
+PlateState unit_state(int j, int inputs, bool refined) {
+  PlateState unit;
+  std::array<Vector6d, 3> d2;
+  std::array<Vector6d, 4> d3;
+  for (auto& v : d2) v.setZero();
+  for (auto& v : d3) v.setZero();
+  const int block = j / 6, entry = j % 6;
+  if (j == inputs - 2) {
+    unit.t_top = 1;
+  } else if (j == inputs - 1) {
+    unit.t_bottom = 1;
+  } else if (block == 0) {
+    unit.R[entry] = 1;
+  } else if (block < 3) {
+    unit.dR[block - 1][entry] = 1;
+  } else if (block < 6) {
+    d2[block - 3][entry] = 1;
+  } else {
+    d3[block - 6][entry] = 1;
+  }
+  if (refined) {
+    unit.d2R = d2;
+    unit.d3R = d3;
+  }
+  return unit;
+}
+
+}  // namespace
+
+void DamageProbe::build_recovery_map() {
+  const bool refined = spec_.recovery == StressRecovery::kRefined;
+  const int inputs = recovery_inputs(spec_.recovery);
+  for (int j = 0; j < inputs; ++j) {
+    const std::vector<RecoveredPoint> r =
+        recover_through_thickness(section_, unit_state(j, inputs, refined), kPointsPerPly);
+    if (j == 0) {
+      recovery_map_ = Eigen::MatrixXd::Zero(6 * static_cast<Eigen::Index>(r.size()), inputs);
+      recovered_template_ = r;
+    }
+    for (std::size_t i = 0; i < r.size(); ++i)
+      recovery_map_.block<6, 1>(6 * static_cast<Eigen::Index>(i), j) = r[i].stress;
+  }
+  for (RecoveredPoint& p : recovered_template_) {
+    p.strain.setZero();
+    p.stress.setZero();
+    p.warping.setZero();
+    p.sigma33_equilibrium.reset();
+  }
+}
+
 NodeDamage DamageProbe::at_node(int k, const Eigen::MatrixXd& strains, double pressure) const {
   const Patch& patch = patches_[k];
   Eigen::MatrixXd values(static_cast<Eigen::Index>(patch.rows.size()), 6);
   for (std::size_t i = 0; i < patch.rows.size(); ++i)
     values.row(static_cast<Eigen::Index>(i)) = strains.row(patch.rows[i]);
-  const PatchFit fit = fit_patch(patch.coords, values, Vector2d::Zero(), kPatchDegree, kPatchNodes);
-  PlateState state;
-  state.R = fit.value;
-  for (int a = 0; a < 2; ++a) state.dR[a] = fit.d1[a];
-  if (spec_.recovery == StressRecovery::kRefined) {
-    std::array<Vector6d, 3> d2;
-    std::array<Vector6d, 4> d3;
-    for (int i = 0; i < 3; ++i) d2[i] = fit.d2[i];
-    for (int i = 0; i < 4; ++i) d3[i] = fit.d3[i];
-    state.d2R = d2;
-    state.d3R = d3;
-  }
+  const Eigen::MatrixXd derivatives = patch.fit * values;  // 10 x 6
+  const int inputs = static_cast<int>(recovery_map_.cols());
+  Eigen::VectorXd in(inputs);
+  for (int block = 0; block < (inputs - 2) / 6; ++block)
+    in.segment<6>(6 * block) = derivatives.row(block).transpose();
   // The indenter presses its face: t+ = -p on the top face, t- = +p on the bottom (along +x3).
-  (loaded_sign_ > 0 ? state.t_top : state.t_bottom) = -loaded_sign_ * pressure;
+  in[inputs - 2] = loaded_sign_ > 0 ? -pressure : 0.0;
+  in[inputs - 1] = loaded_sign_ > 0 ? 0.0 : pressure;
+  const Eigen::VectorXd stress = recovery_map_ * in;
   NodeDamage d;
   d.node = monitored_[k];
-  d.recovered = recover_through_thickness(section_, state, kPointsPerPly);
+  d.recovered = recovered_template_;
+  for (std::size_t i = 0; i < d.recovered.size(); ++i)
+    d.recovered[i].stress = stress.segment<6>(6 * static_cast<Eigen::Index>(i));
   d.failure = failure_.evaluate(d.recovered);
   return d;
 }

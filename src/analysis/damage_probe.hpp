@@ -59,13 +59,15 @@ class DamageProbe : public StateProbe {
 
  private:
   struct Patch {
-    std::vector<int> rows;         // rows of the patch's nodes in the strain table
-    std::vector<Vector2d> coords;  // tangent-plane coordinates about the node, mm
+    std::vector<int> rows;  // rows of the patch's nodes in the strain table
+    // The fit as a linear map of the patch's values: rows value, ,1 ,2, ,11 ,12 ,22, ,111 ,112
+    // ,122 ,222 at the node (fit_patch of unit values), so one evaluation is one product.
+    Eigen::MatrixXd fit;
   };
-  Patch make_patch(int node) const;
   // The averaged nodal strains R of the patch nodes, one row per strain_nodes_ entry.
   Eigen::MatrixXd patch_strains(const std::vector<NodeState>& states) const;
   NodeDamage at_node(int k, const Eigen::MatrixXd& strains, double pressure) const;
+  void build_recovery_map();
   std::vector<double> monitored_pressures(const ProbePoint& point) const;
 
   const ShellModel& model_;
@@ -80,6 +82,12 @@ class DamageProbe : public StateProbe {
   std::vector<Patch> patches_;        // per monitored node
   std::vector<int> strain_nodes_;     // the patches' nodes, each once
   std::vector<int> strain_elements_;  // the elements around them
+  // The recovery is linear in R, its derivatives and the face tractions: the stresses of every
+  // recovered point (6 rows each, bottom ply first) = recovery_map_ * [R; R,1; R,2; (R,ab;
+  // R,abc: refined); t+; t-], built once from unit inputs. The template holds each recovered
+  // point's ply and x3 (its strain and warping are not computed: the criteria read the stress).
+  Eigen::MatrixXd recovery_map_;
+  std::vector<RecoveredPoint> recovered_template_;
 };
 
 }  // namespace si
