@@ -24,6 +24,11 @@
 namespace si {
 namespace {
 
+// The criteria whose failure indices the run monitors (their columns are the run's).
+std::vector<Criterion> monitored_criteria(const IndentationCase& c) {
+  return c.damage ? c.damage->criteria : std::vector<Criterion>{};
+}
+
 IndentationOptions options_of(const IndentationCase& c, int threads,
                               JacobianSolverKind linear_solver) {
   IndentationOptions o;
@@ -40,7 +45,7 @@ IndentationOptions options_of(const IndentationCase& c, int threads,
   o.interpolated.fbar = c.contact.fbar;
   if (c.contact.fbar) o.interpolated.fbar_top = analyze_vam(c.laminate).Fbar_top;
   o.local = local_contact_law(c);
-  o.monitors = path_monitors();
+  o.monitors = path_monitors(run_columns(monitored_criteria(c)));
   return o;
 }
 
@@ -81,12 +86,65 @@ void finish(PathResult& r, bool completed, RunStatus status, const std::string& 
 // failed, empty on success, and the iterations it took.
 using DepthSolve = std::function<std::string(double h, cont::Vector& z, int& iterations)>;
 
+// Onset events between the last two points of a grid: where a failure index reaches 1. With an
+// exact solve per depth (`solve`, the linear fast path) located by the Illinois regula falsi to
+// 1e-10 of the depth (one step when the index is linear in the depth); otherwise (the active-set
+// grid, whose solves may grow the candidate set) interpolated linearly and marked not located.
+void locate_onsets(IndentationSetup& s, PathResult& r, const cont::Vector& z_previous,
+                   const DepthSolve& solve) {
+  const PathPoint& a = r.points[r.points.size() - 2];
+  const PathPoint& b = r.points.back();
+  const std::vector<PathColumn> columns = run_columns(r.criteria);
+  for (Criterion c : r.criteria) {
+    const double fa = a.state.failure[static_cast<int>(c)].index - 1;
+    const double fb = b.state.failure[static_cast<int>(c)].index - 1;
+    if (!(fa < 0 && fb >= 0)) continue;
+    cont::Event e;
+    e.type = cont::EventType::kZeroCrossing;
+    e.monitor = column_name(failure_column(c));
+    e.step = b.index;
+    double lo = a.state.depth, hi = b.state.depth, flo = fa, fhi = fb;
+    e.p = lo + (hi - lo) * flo / (flo - fhi);
+    e.located = static_cast<bool>(solve);
+    e.accuracy = hi - lo;
+    IndentationState state = b.state;
+    int kept = 0;  // the end replaced last: -1 lo, +1 hi (Illinois halves the other's value)
+    for (int it = 0; solve && it < 60; ++it) {
+      cont::Vector z = z_previous;
+      int iterations = 0;
+      if (!solve(e.p, z, iterations).empty()) {
+        e.located = false;
+        break;
+      }
+      state = s.problem->evaluate(z, e.p);
+      e.x = z;
+      const double f = state.failure[static_cast<int>(c)].index - 1;
+      if (f < 0) {
+        lo = e.p, flo = f;
+        if (kept == -1) fhi *= 0.5;
+        kept = -1;
+      } else {
+        hi = e.p, fhi = f;
+        if (kept == 1) flo *= 0.5;
+        kept = 1;
+      }
+      // The bracket, or the depth error of the residual index over the segment's slope.
+      e.accuracy = std::min(hi - lo, std::abs(f) * (b.state.depth - a.state.depth) / (fb - fa));
+      if (std::abs(f) <= 1e-12 || hi - lo <= 1e-10 * (1 + hi)) break;
+      e.p = lo + (hi - lo) * flo / (flo - fhi);
+    }
+    e.monitors = monitor_values(solve ? state : b.state, columns);
+    r.events.push_back(e);
+  }
+}
+
 // The depth grid, one solve per depth, from the undeformed start.
 PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback, RunMethod method,
                           const DepthSolve& solve) {
   PathResult r;
   r.method = method;
   r.monitor_names = s.problem->monitor_names();
+  r.criteria = monitored_criteria(s.spec);
   PathRecorder rec(r, callback);
   cont::Vector z = s.problem->initial_point();
   r.final_unknowns = z;
@@ -102,11 +160,13 @@ PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback, Run
       finish(r, false, RunStatus::kFailed, "depth " + std::to_string(h) + " mm: " + failure);
       return r;
     }
+    const cont::Vector z_previous = r.final_unknowns;
     r.final_unknowns = z;
     if (!rec.add(*s.problem, z, h, iterations, h - previous)) {
       finish(r, false, RunStatus::kStopped, "stopped by the user");
       return r;
     }
+    locate_onsets(s, r, z_previous, method == RunMethod::kLinearFastPath ? solve : DepthSolve());
     previous = h;
   }
   finish(r, true, RunStatus::kCompleted, "");
@@ -170,6 +230,10 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   c.max_steps = static_cast<int>(20 * path.depth_max / path.step) + 100;
   c.newton = path_newton_settings(s);
   c.extremum_monitors = {column_name(PathColumn::kForce)};
+  // Damage onset: each monitored failure index reaching 1 (analysis/damage_results.hpp).
+  if (s.spec.damage)
+    for (Criterion k : s.spec.damage->criteria)
+      c.level_crossings.push_back({column_name(failure_column(k)), 1.0});
   // Inflections of T_N against k11, k22 (the critical force) come from the points afterwards
   // (critical_force.hpp): located ones would sit on every contact-set change.
   c.detect_signature_changes = true;
@@ -193,7 +257,8 @@ Eigen::VectorXd depth_slopes(const cont::Point& pt) {
 nlohmann::json path_attachment(const IndentationProblem& problem, const PathResult& r,
                                const PathControl& control) {
   nlohmann::json points = nlohmann::json::array();
-  for (const PathPoint& p : r.points) points.push_back(path_point_values(p));
+  for (const PathPoint& p : r.points)
+    points.push_back(path_point_values(p, run_columns(r.criteria)));
   return {{"candidates", problem.candidates()},
           {"points", points},
           {"record", control.save_record ? control.save_record() : nlohmann::json()}};
@@ -223,7 +288,8 @@ cont::Checkpoint restore(const PathControl& control, IndentationProblem& problem
     throw_input("cannot resume: the checkpoint does not belong to this case", where);
   problem.restore_candidates(candidates);
   for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
-    r.points.push_back(path_point_from_values(a["points"][i].get<std::vector<double>>()));
+    r.points.push_back(
+        path_point_from_values(a["points"][i].get<std::vector<double>>(), run_columns(r.criteria)));
     r.points.back().index = static_cast<int>(i);
     r.points.back().depth_slopes = depth_slopes(c.branch.points[i]);
   }
@@ -247,6 +313,7 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   r.method =
       settings.method == cont::Method::kNatural ? RunMethod::kNatural : RunMethod::kPseudoArclength;
   r.monitor_names = s.problem->monitor_names();
+  r.criteria = monitored_criteria(s.spec);
   settings.checkpoint_path = control.checkpoint;
   settings.checkpoint_writer = [](const std::string& path, const std::string& text) {
     write_file_atomically(path, text);
@@ -333,6 +400,11 @@ IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolve
     // The problem names `indenter`; the case's pose is what the user can change.
     throw Error(e.kind(), e.reason(), Where{spec.file, where, value, 0});
   }
+  if (spec.damage && !spec.damage->criteria.empty()) {
+    damage = std::make_shared<DamageProbe>(model, problem->assembler(), spec.laminate, *spec.damage,
+                                           pose.direction, problem->candidates());
+    problem->set_probe(damage);
+  }
 }
 
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback,
@@ -348,6 +420,7 @@ PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& cal
     const std::vector<cont::Event> found = critical_force_events(r.points, k);
     r.events.insert(r.events.end(), found.begin(), found.end());
   }
+  add_damage_results(setup, r);
   return r;
 }
 

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/damage_probe.hpp"
+#include "analysis/damage_results.hpp"
 #include "analysis/indentation_case.hpp"
 #include "continuation/branch.hpp"
 #include "continuation/settings.hpp"
@@ -34,6 +36,9 @@ struct IndentationSetup {
   IndenterPose pose;
   std::unique_ptr<Indenter> indenter;
   std::unique_ptr<IndentationProblem> problem;
+  // The failure indices at the nodes near the indenter (a case whose `damage:` section names
+  // criteria); the problem's probe.
+  std::shared_ptr<const DamageProbe> damage;
 
   // Throws an input error naming the case file and key for a case that cannot run.
   // linear_solver: the contact Jacobian's solver (indentation_problem.hpp, docs/performance.md).
@@ -78,7 +83,9 @@ struct PathResult {
   std::vector<PathPoint> points;
   std::vector<cont::Event> events;
   std::vector<std::string> monitor_names;
-  bool completed = false;  // reached the end of the path
+  std::vector<Criterion> criteria;  // monitored: their failure-index columns are the run's
+  DamageResults damage;             // a case with a `damage:` section (damage_results.hpp)
+  bool completed = false;           // reached the end of the path
   RunStatus status = RunStatus::kFailed;
   std::string reason;  // why it stopped early; empty when completed
   // The problem's unknowns at the last point (to write its fields); empty if there is none.

@@ -8,6 +8,7 @@
 // if they differ from it).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,13 @@ enum class PathColumn {
   kK12ContactMin,
   kK12ContactMax,
   kK22ContactMin,
-  kK22ContactMax
+  kK22ContactMax,
+  // The failure indices (damage/failure_index.hpp), only in runs whose case monitors the
+  // criterion (docs/case-file.md `damage.criteria`).
+  kMaxStressIndex,
+  kTsaiWuIndex,
+  kHashinIndex,
+  kDelaminationIndex
 };
 
 // How path_grid.csv interpolates a column between two converged points (docs/results.md).
@@ -65,6 +72,8 @@ struct ColumnSpec {
   void (*restore)(PathPoint&, double) = nullptr;  // the inverse (checkpoints)
   bool monitor = false;  // a continuation monitor (of_state, no assembly needed)
   GridInterpolation grid = GridInterpolation::kLinear;
+  // A failure index: present only in the runs that monitor this criterion.
+  std::optional<Criterion> criterion = std::nullopt;
 };
 
 // All columns, in path.csv's order (the order of PathColumn).
@@ -73,13 +82,24 @@ const ColumnSpec& path_column(PathColumn id);
 const char* column_name(PathColumn id);
 double column_value(const ColumnSpec& c, const PathPoint& p);
 
-// A point's values in column order, and the point they restore (its per-node vectors empty).
-std::vector<double> path_point_values(const PathPoint& p);
-PathPoint path_point_from_values(const std::vector<double>& v);
+// The columns of a run, in table order: those of every run, and the failure index of each
+// criterion it monitors. base_columns(): a run without damage (run_columns({})).
+std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored);
+const std::vector<PathColumn>& base_columns();
+// The column of a criterion's failure index.
+PathColumn failure_column(Criterion criterion);
 
-// The monitor columns, in column order: the continuation's monitors of an indentation run.
-std::vector<StateMonitor> path_monitors();
+// A point's values in the order of `columns`, and the point they restore (its per-node vectors
+// empty).
+std::vector<double> path_point_values(const PathPoint& p,
+                                      const std::vector<PathColumn>& columns = base_columns());
+PathPoint path_point_from_values(const std::vector<double>& v,
+                                 const std::vector<PathColumn>& columns = base_columns());
+
+// The monitor columns among `columns`, in their order: the continuation's monitors of a run.
+std::vector<StateMonitor> path_monitors(const std::vector<PathColumn>& columns = base_columns());
 // Their values at a state, in the same order.
-Eigen::VectorXd monitor_values(const IndentationState& s);
+Eigen::VectorXd monitor_values(const IndentationState& s,
+                               const std::vector<PathColumn>& columns = base_columns());
 
 }  // namespace si

@@ -18,6 +18,7 @@
 #include "io/case_digest.hpp"
 #include "io/case_file.hpp"
 #include "io/case_key_location.hpp"
+#include "io/damage_fields.hpp"
 #include "io/output_directory.hpp"
 #include "io/output_lock.hpp"
 #include "io/path_results.hpp"
@@ -43,6 +44,7 @@ void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& 
   }
   fields.point_data["contact_pressure"] = pressure;
   fields.point_data["contact_force"] = force;
+  add_damage_fields(s, st, z, fields);
   write_vtu(file.string(), s.model.mesh, state, fields);
 }
 
@@ -163,7 +165,8 @@ void check_same_case(const nlohmann::json& record, const CaseDigest& now, const 
 std::vector<std::string> write_path_files(const std::filesystem::path& dir,
                                           const OutputChoice& formats,
                                           const IndentationSetup& setup, const PathResult& r,
-                                          const std::vector<std::pair<double, std::string>>& vtus) {
+                                          const std::vector<std::pair<double, std::string>>& vtus,
+                                          const std::string& damage_rows) {
   const PathSpec& path = setup.spec.path;
   std::vector<std::string> written;
   const bool arclength = r.method == RunMethod::kPseudoArclength;
@@ -174,6 +177,11 @@ std::vector<std::string> write_path_files(const std::filesystem::path& dir,
       write_file_atomically((dir / "path_grid.csv").string(),
                             path_grid_csv(r, path.step, path.depth_max));
       written.push_back("path_grid.csv (interpolated at the depth steps)");
+    }
+    if (setup.damage) {
+      write_file_atomically((dir / "damage_points.csv").string(),
+                            damage_points_header(setup) + damage_rows);
+      written.push_back("damage_points.csv");
     }
   }
   if (formats.json) {
@@ -244,9 +252,11 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   const CaseDigest digest = case_digest(text);
   Progress progress(err, cf.path.depth_max);
   std::vector<std::pair<double, std::string>> vtus;
+  std::string damage_rows;  // damage_points.csv's rows so far (saved with the checkpoints)
   InterruptGuard guard;
   const PathCallback on_point = [&](const PathPoint& p, const cont::Vector& z) {
     progress.show(p);
+    if (formats.csv) damage_rows += damage_points_rows(setup, p, z);
     const int every = cf.output.vtu_every;
     if (formats.vtu && every > 0 && p.index % every == 0) {
       write_point_vtu(dir / vtu_name(p.index), setup, p.state, z);
@@ -257,13 +267,16 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   control.save_record = [&] {
     nlohmann::json frames = nlohmann::json::array();
     for (const auto& [depth, name] : vtus) frames.push_back({depth, name});
-    return nlohmann::json{{"case", digest.to_json()}, {"vtu", frames}};
+    nlohmann::json record{{"case", digest.to_json()}, {"vtu", frames}};
+    if (setup.damage) record["damage_points"] = damage_rows;
+    return record;
   };
   control.restore_record = [&](const nlohmann::json& record) {
     check_same_case(record, digest, cf.file, text, control.checkpoint);
     vtus.clear();
     for (const auto& f : record.value("vtu", nlohmann::json::array()))
       vtus.emplace_back(f.at(0).get<double>(), f.at(1).get<std::string>());
+    damage_rows = record.value("damage_points", std::string());
   };
   PathResult r = run_indentation_path(setup, on_point, control);
   progress.done();
@@ -297,7 +310,8 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
       out << "event: " << e.name << (e.monitor.empty() ? "" : " of " + e.monitor)
           << (e.against.empty() ? "" : " against " + e.against) << " at depth " << e.p << " mm\n";
 
-  const std::vector<std::string> written = write_path_files(dir, formats, setup, r, vtus);
+  const std::vector<std::string> written =
+      write_path_files(dir, formats, setup, r, vtus, damage_rows);
   err << "wrote ";
   for (std::size_t i = 0; i < written.size(); ++i) err << (i ? ", " : "") << written[i];
   err << (written.empty() ? "nothing (output.formats)" : "") << "\n";

@@ -24,6 +24,7 @@
 #include <thread>
 
 #include "analysis/path_columns.hpp"
+#include "app/damage_summary.hpp"
 #include "app/interrupt_signals.hpp"
 #include "app/thread_count.hpp"
 #include "core/atomic_file.hpp"
@@ -302,6 +303,7 @@ json summarize(const StudyCase& c, const fs::path& dir, const StudyFile& study) 
     row[std::string("critical_") + k + "_depth_mm"] = at_depth;
     row[std::string("critical_") + k + "_force_N"] = at_force;
   }
+  summarize_damage(*path, row);
   if (study.has_fit) {
     const json grid = grid_points(dir);
     fit_contact_law(grid.empty() ? pts : grid, study.fit, c.case_file.path.step, row);
@@ -319,7 +321,7 @@ json not_run(const StudyCase& c, const std::string& signal) {
   return row;
 }
 
-std::vector<std::string> columns(const StudyFile& study) {
+std::vector<std::string> columns(const StudyFile& study, const std::vector<StudyCase>& cases) {
   std::vector<std::string> cols{"case"};
   for (const auto& kv : study.vary) cols.push_back(kv.first);
   for (const char* c :
@@ -327,6 +329,7 @@ std::vector<std::string> columns(const StudyFile& study) {
         "depth_at_max_force_mm", "energy_end_Nmm", "critical_k11_depth_mm", "critical_k11_force_N",
         "critical_k22_depth_mm", "critical_k22_force_N"})
     cols.push_back(c);
+  for (const std::string& c : damage_columns(cases)) cols.push_back(c);
   if (study.has_fit)
     for (const char* c : {"fit_status", "C1", "C1_lo", "C1_hi", "C2", "C2_lo", "C2_hi", "R2"})
       cols.push_back(c);
@@ -412,7 +415,7 @@ int run_sweep_command(const SweepCommandOptions& o, std::ostream& out, std::ostr
                                         : not_run(cases[i], interrupt_name()));
     failed += finished(rows.back()["status"].get<std::string>()) ? 0 : 1;
   }
-  const std::vector<std::string> cols = columns(study);
+  const std::vector<std::string> cols = columns(study, cases);
   const std::string csv = sweep_csv(cols, rows);
   write_file_atomically((root / "sweep.csv").string(), csv);
   const json doc{{"study", study.file},

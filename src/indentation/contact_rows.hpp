@@ -64,6 +64,8 @@ class ContactRows : public ContactTerm {
   virtual SparseMatrix gap_matrix(const TermPoint& reference) const = 0;
   Eigen::VectorXd reference_gaps(const TermPoint& reference) const;
   Eigen::VectorXd layer_compliances() const;
+  // lambda_i over this is candidate i's contact pressure, MPa (the state's `pressures`).
+  double pressure_area_of(int i) const { return pressure_area(i); }
 
  protected:
   // Value slots in J of candidate i's entries on its node's equations (-1 where prescribed).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -209,6 +210,28 @@ void IndentationProblem::quantities(const cont::Vector& z, const std::vector<Nod
   out.apex_curvature = shell_.curvature(s, apex);
   const TermPoint p{z, h, s};
   for (const auto& t : parts_.terms) t->quantities(p, out);
+  probe(z, s, out);
+}
+
+void IndentationProblem::probe(const cont::Vector& z, const std::vector<NodeState>& s,
+                               IndentationState& out) const {
+  if (!probe_) return;
+  const int first = contact_->first();
+  const int given = std::min(static_cast<int>(z.size()) - first - layout().local, contact_->size());
+  Eigen::VectorXd pressures = Eigen::VectorXd::Zero(contact_->size());
+  for (int i = 0; i < given; ++i) pressures[i] = z[first + i] / contact_->pressure_area_of(i);
+  probe_->measure(ProbePoint{s, contact_->candidates(), pressures}, out);
+}
+
+void IndentationProblem::set_probe(std::shared_ptr<const StateProbe> probe) {
+  probe_ = std::move(probe);
+  cached_state_.reset();
+}
+
+IndentationState IndentationProblem::probe_at(const cont::Vector& z) const {
+  IndentationState out;
+  probe(z, shell_.states(z.head(shell_.size())), out);
+  return out;
 }
 
 cont::Vector IndentationProblem::monitors(const cont::Vector& z, double h) {

@@ -32,6 +32,7 @@
 #include "indentation/indentation_options.hpp"
 #include "indentation/jacobian_solver.hpp"
 #include "indentation/shell_part.hpp"
+#include "indentation/state_probe.hpp"
 
 namespace si {
 
@@ -105,6 +106,14 @@ class IndentationProblem : public cont::Problem {
   // nonlinear: the fast path refuses it (run_indentation_path routes it to the continuation).
   Eigen::VectorXd layer_compliances() const;
   IndentationState evaluate(const cont::Vector& z, double h);
+  // What else the state carries from the displacement field (the failure indices of a run that
+  // monitors damage, analysis/damage_probe.hpp), from now on; none by default. Set it before the
+  // path starts: the monitors read it.
+  void set_probe(std::shared_ptr<const StateProbe> probe);
+  // The probe's part of the state (set_probe; nothing without one) at unknowns
+  // z of this run, also of an earlier point whose candidate set was smaller (an event found
+  // before the set grew: the candidates are appended, so z's multipliers are the set's head).
+  IndentationState probe_at(const cont::Vector& z) const;
   const ShellModel& model() const { return model_; }
   IndentationCounters counters() const;
   // The preconditioned Krylov solver's work (zero with a direct LU).
@@ -121,6 +130,8 @@ class IndentationProblem : public cont::Problem {
   // The quantities of the monitors (no gaps, no assembly).
   void quantities(const cont::Vector& z, const std::vector<NodeState>& s, double h,
                   IndentationState& out) const;
+  // The probe's part at node states s; z's multiplier block may be the head of today's.
+  void probe(const cont::Vector& z, const std::vector<NodeState>& s, IndentationState& out) const;
 
   const ShellModel& model_;
   IndentationOptions options_;
@@ -131,6 +142,7 @@ class IndentationProblem : public cont::Problem {
   ContactRows* contact_ = nullptr;  // the indenter's contact rows (in parts_)
   int border_ = 0;                  // bordering unknowns at the end of z (ContactTerm::borders)
   std::unique_ptr<JacobianSolver> solver_;
+  std::shared_ptr<const StateProbe> probe_;
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
   IndentationCounters counters_;

@@ -9,6 +9,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "core/units.hpp"
+#include "io/damage_reader.hpp"
 #include "io/laminate_reader.hpp"
 #include "io/material_reader.hpp"
 #include "io/named_sets_reader.hpp"
@@ -415,7 +416,7 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   if (root.IsNull()) throw_input("the case file is empty", Where{file_label, "", "", 0});
   const MapReader top(root, Where{file_label, "", "", 0});
   top.allow_only({"material", "materials", "laminate", "shell", "mesh", "kinematics", "indenter",
-                  "contact", "path", "output", "load", "loads", "supports"});
+                  "contact", "path", "output", "load", "loads", "supports", "damage"});
   top.at("laminate");  // say it is missing before reading the rest
   const MaterialTable materials = read_materials(top);
   const Kinematics kinematics =
@@ -429,11 +430,13 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   PathSpec path = read_path(top);
   OutputSpec output = read_output(top);
   std::optional<LoadSpec> load = read_load(top);
+  std::optional<DamageSpec> damage = read_damage(top, laminate);
   return CaseFile{{{std::move(laminate), std::move(shell), std::move(mesh), kinematics,
                     std::move(load), file_label},
                    std::move(indenter),
                    contact,
-                   std::move(path)},
+                   std::move(path),
+                   std::move(damage)},
                   materials.default_material,
                   std::move(output)};
 }

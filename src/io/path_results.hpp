@@ -25,8 +25,8 @@ namespace si {
 const char* run_method_name(RunMethod method);
 const char* run_status_name(RunStatus status);
 
-// The header line of path.csv (without newline).
-std::string path_csv_header();
+// The header line of path.csv (without newline) of a run monitoring these criteria.
+std::string path_csv_header(const std::vector<Criterion>& monitored = {});
 std::string path_csv(const PathResult& result);
 std::string path_grid_csv(const PathResult& result, double dh, double depth_max);
 nlohmann::json events_json(const PathResult& result);

@@ -84,16 +84,33 @@ TEST(PathColumns, NamesAreUniqueAndEveryColumnIsComputedAndRestored) {
     }
   }
   EXPECT_EQ(std::string(column_name(PathColumn::kForce)), "force_N");
-  EXPECT_EQ(path_columns().back().id, PathColumn::kK22ContactMax);
+  EXPECT_EQ(path_columns().back().id, PathColumn::kDelaminationIndex);
+}
+
+// A run has the columns of every run, plus the failure index of each criterion it monitors (in
+// table order, whatever the case's order); a run without damage has exactly the others.
+TEST(PathColumns, FailureIndicesOnlyInRunsThatMonitorThem) {
+  const std::vector<PathColumn>& base = base_columns();
+  EXPECT_EQ(base.back(), PathColumn::kK22ContactMax);
+  EXPECT_EQ(base.size() + 4, path_columns().size());
+  const std::vector<PathColumn> run =
+      run_columns({Criterion::kQuadraticDelamination, Criterion::kHashin});
+  ASSERT_EQ(run.size(), base.size() + 2);
+  EXPECT_EQ(run[base.size()], PathColumn::kHashinIndex);
+  EXPECT_EQ(run[base.size() + 1], PathColumn::kDelaminationIndex);
+  EXPECT_EQ(failure_column(Criterion::kTsaiWu), PathColumn::kTsaiWuIndex);
+  EXPECT_EQ(path_monitors(run).size(), path_monitors().size() + 2);
 }
 
 // The checkpoint's point values restore every column (distinct values, so a swap shows).
 TEST(PathColumns, PointValuesRoundTrip) {
   std::vector<double> v;
-  for (std::size_t i = 0; i < path_columns().size(); ++i) v.push_back(1.5 + static_cast<double>(i));
+  std::vector<PathColumn> all;
+  for (const ColumnSpec& c : path_columns()) all.push_back(c.id);
+  for (std::size_t i = 0; i < all.size(); ++i) v.push_back(1.5 + static_cast<double>(i));
   v[static_cast<std::size_t>(PathColumn::kContactNodes)] = 7;
   v[static_cast<std::size_t>(PathColumn::kIterations)] = 3;
-  EXPECT_EQ(path_point_values(path_point_from_values(v)), v);
+  EXPECT_EQ(path_point_values(path_point_from_values(v, all), all), v);
   EXPECT_THROW(path_point_from_values(std::vector<double>(3, 0.0)), Error);
 }
 
