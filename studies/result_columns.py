@@ -29,6 +29,8 @@ K12_CONTACT_MIN_PER_MM = "k12_contact_min_per_mm"
 K12_CONTACT_MAX_PER_MM = "k12_contact_max_per_mm"
 K22_CONTACT_MIN_PER_MM = "k22_contact_min_per_mm"
 K22_CONTACT_MAX_PER_MM = "k22_contact_max_per_mm"
+STABLE = "stable"
+LOWEST_EIGENVALUE = "lowest_eigenvalue"
 
 # All columns, in path.csv's order.
 PATH_COLUMNS = (
@@ -57,6 +59,8 @@ PATH_COLUMNS = (
     K12_CONTACT_MAX_PER_MM,
     K22_CONTACT_MIN_PER_MM,
     K22_CONTACT_MAX_PER_MM,
+    STABLE,
+    LOWEST_EIGENVALUE,
 )
 
 UNITS = {
@@ -85,4 +89,6 @@ UNITS = {
     K12_CONTACT_MAX_PER_MM: "1/mm",
     K22_CONTACT_MIN_PER_MM: "1/mm",
     K22_CONTACT_MAX_PER_MM: "1/mm",
+    STABLE: "-",
+    LOWEST_EIGENVALUE: "N/mm",
 }

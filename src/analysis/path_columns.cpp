@@ -136,6 +136,32 @@ std::vector<ColumnSpec> make_columns() {
   for (int i = 0; i < 6; ++i)
     c.push_back({static_cast<PathColumn>(static_cast<int>(PathColumn::kK11ContactMin) + i),
                  names[i], "1/mm", descriptions[i], value[i], nullptr, restore[i]});
+  // The stability of the point (path.stability; docs/theory/continuation.md 9, 12).
+  ColumnSpec stable{PathColumn::kStable,
+                    "stable",
+                    "-",
+                    "1 if the point is a stable equilibrium on its contact set: the tangent "
+                    "restricted to the directions that keep the pressing contacts has no "
+                    "negative and no numerically zero eigenvalue; else 0 (written with "
+                    "`path.stability: true`; path_grid.csv: 1 only between two stable points)",
+                    nullptr,
+                    [](const PathPoint& p) { return p.stable ? 1.0 : 0.0; },
+                    [](PathPoint& p, double v) { p.stable = v != 0; }};
+  stable.grid = G::kMinimum;
+  stable.stability = true;
+  ColumnSpec lowest{PathColumn::kLowestEigenvalue,
+                    "lowest_eigenvalue",
+                    "N/mm",
+                    "lowest eigenvalue of that restricted tangent (the Hessian of the energy in "
+                    "the shell's chart coordinates, mm and rad, so N/mm for a mode of "
+                    "translations); it crosses zero where the point loses stability (written "
+                    "with `path.stability: true`)",
+                    nullptr,
+                    [](const PathPoint& p) { return p.lowest_eigenvalue; },
+                    [](PathPoint& p, double v) { p.lowest_eigenvalue = v; }};
+  lowest.stability = true;
+  c.push_back(stable);
+  c.push_back(lowest);
   for (std::size_t i = 0; i < c.size(); ++i)
     SI_ASSERT(static_cast<std::size_t>(c[i].id) == i);  // the table is in PathColumn's order
   return c;
@@ -160,18 +186,25 @@ double column_value(const ColumnSpec& c, const PathPoint& p) {
   return c.of_state ? c.of_state(p.state) : c.of_point(p);
 }
 
-std::vector<double> path_point_values(const PathPoint& p) {
+std::vector<const ColumnSpec*> written_columns(bool stability) {
+  std::vector<const ColumnSpec*> out;
+  for (const ColumnSpec& c : path_columns())
+    if (stability || !c.stability) out.push_back(&c);
+  return out;
+}
+
+std::vector<double> path_point_values(const PathPoint& p, bool stability) {
   std::vector<double> v;
-  for (const ColumnSpec& c : path_columns()) v.push_back(column_value(c, p));
+  for (const ColumnSpec* c : written_columns(stability)) v.push_back(column_value(*c, p));
   return v;
 }
 
-PathPoint path_point_from_values(const std::vector<double>& v) {
-  const std::vector<ColumnSpec>& columns = path_columns();
+PathPoint path_point_from_values(const std::vector<double>& v, bool stability) {
+  const std::vector<const ColumnSpec*> columns = written_columns(stability);
   SI_REQUIRE(v.size() == columns.size(),
              "a path point has " + std::to_string(columns.size()) + " values");
   PathPoint p;
-  for (std::size_t i = 0; i < columns.size(); ++i) columns[i].restore(p, v[i]);
+  for (std::size_t i = 0; i < columns.size(); ++i) columns[i]->restore(p, v[i]);
   return p;
 }
 

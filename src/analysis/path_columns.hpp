@@ -41,7 +41,9 @@ enum class PathColumn {
   kK12ContactMin,
   kK12ContactMax,
   kK22ContactMin,
-  kK22ContactMax
+  kK22ContactMax,
+  kStable,
+  kLowestEigenvalue
 };
 
 // How path_grid.csv interpolates a column between two converged points (docs/results.md).
@@ -51,7 +53,8 @@ enum class GridInterpolation {
   kHermiteForce,  // the same with the force as slope (the work: dW/dh = T_N)
   // The same where the local energy is zero at both ends (the strain energy without a local
   // law: dU/dh = T_N at equilibrium), linear otherwise.
-  kHermiteForceWithoutLocalLaw
+  kHermiteForceWithoutLocalLaw,
+  kMinimum  // the smaller end (a flag: 1 inside only if 1 at both ends)
 };
 
 struct ColumnSpec {
@@ -65,6 +68,9 @@ struct ColumnSpec {
   void (*restore)(PathPoint&, double) = nullptr;  // the inverse (checkpoints)
   bool monitor = false;  // a continuation monitor (of_state, no assembly needed)
   GridInterpolation grid = GridInterpolation::kLinear;
+  // Written only by runs that compute the points' stability (path.stability: true), so that a
+  // run without it writes exactly what it wrote before the columns existed.
+  bool stability = false;
 };
 
 // All columns, in path.csv's order (the order of PathColumn).
@@ -73,9 +79,14 @@ const ColumnSpec& path_column(PathColumn id);
 const char* column_name(PathColumn id);
 double column_value(const ColumnSpec& c, const PathPoint& p);
 
-// A point's values in column order, and the point they restore (its per-node vectors empty).
-std::vector<double> path_point_values(const PathPoint& p);
-PathPoint path_point_from_values(const std::vector<double>& v);
+// The columns a run writes, in column order: all of them with stability (PathResult::stability),
+// else all but the stability columns.
+std::vector<const ColumnSpec*> written_columns(bool stability);
+
+// A point's values in written_columns(stability)'s order, and the point they restore (its
+// per-node vectors empty).
+std::vector<double> path_point_values(const PathPoint& p, bool stability = false);
+PathPoint path_point_from_values(const std::vector<double>& v, bool stability = false);
 
 // The monitor columns, in column order: the continuation's monitors of an indentation run.
 std::vector<StateMonitor> path_monitors();

@@ -1,5 +1,6 @@
 #include "io/path_results.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -34,9 +35,10 @@ double monitor_value(const Eigen::VectorXd& values, const std::vector<std::strin
 // (dU/dh = T_N at equilibrium); the contact radius and area step from node to node, and the
 // counts and residuals are no functions to interpolate: those stay linear.
 std::vector<double> interpolate(const PathPoint& a, const PathPoint& b, double d,
-                                const std::vector<std::string>& monitors) {
+                                const std::vector<std::string>& monitors, bool stability) {
   const double d0 = a.state.depth, dd = b.state.depth - d0, t = (d - d0) / dd;
-  const std::vector<double> va = path_point_values(a), vb = path_point_values(b);
+  const std::vector<double> va = path_point_values(a, stability),
+                            vb = path_point_values(b, stability);
   std::vector<double> out(va.size());
   for (std::size_t c = 0; c < va.size(); ++c) out[c] = (1 - t) * va[c] + t * vb[c];
   const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t);
@@ -47,13 +49,16 @@ std::vector<double> interpolate(const PathPoint& a, const PathPoint& b, double d
   };
   const std::size_t force = static_cast<std::size_t>(PathColumn::kForce);
   const std::size_t local = static_cast<std::size_t>(PathColumn::kLocalEnergy);
-  const std::vector<ColumnSpec>& columns = path_columns();
-  for (std::size_t c = 0; c < columns.size(); ++c) switch (columns[c].grid) {
+  const std::vector<const ColumnSpec*> columns = written_columns(stability);
+  for (std::size_t c = 0; c < columns.size(); ++c) switch (columns[c]->grid) {
       case GridInterpolation::kLinear:
         break;
+      case GridInterpolation::kMinimum:
+        out[c] = std::min(va[c], vb[c]);
+        break;
       case GridInterpolation::kHermite:
-        hermite(c, monitor_value(a.depth_slopes, monitors, columns[c].name),
-                monitor_value(b.depth_slopes, monitors, columns[c].name));
+        hermite(c, monitor_value(a.depth_slopes, monitors, columns[c]->name),
+                monitor_value(b.depth_slopes, monitors, columns[c]->name));
         break;
       case GridInterpolation::kHermiteForceWithoutLocalLaw:
         if (va[local] != 0 || vb[local] != 0) break;
@@ -81,18 +86,19 @@ const char* run_status_name(RunStatus status) {
   return names[static_cast<int>(status)];
 }
 
-std::string path_csv_header() {
+std::string path_csv_header(bool stability) {
   std::string h;
-  for (const ColumnSpec& c : path_columns()) h += (h.empty() ? "" : ",") + std::string(c.name);
+  for (const ColumnSpec* c : written_columns(stability))
+    h += (h.empty() ? "" : ",") + std::string(c->name);
   return h;
 }
 
 std::string path_csv(const PathResult& result) {
   std::ostringstream os;
   os.precision(12);
-  os << path_csv_header() << '\n';
+  os << path_csv_header(result.stability) << '\n';
   for (const PathPoint& p : result.points) {
-    const std::vector<double> v = path_point_values(p);
+    const std::vector<double> v = path_point_values(p, result.stability);
     for (std::size_t i = 0; i < v.size(); ++i) os << (i ? "," : "") << v[i];
     os << '\n';
   }
@@ -102,7 +108,7 @@ std::string path_csv(const PathResult& result) {
 std::string path_grid_csv(const PathResult& result, double dh, double depth_max) {
   std::ostringstream os;
   os.precision(12);
-  os << path_csv_header() << ",interpolated\n";
+  os << path_csv_header(result.stability) << ",interpolated\n";
   const auto& pts = result.points;
   const int n = static_cast<int>(std::floor(depth_max / dh + 1e-9));
   for (int k = 0; k <= n; ++k) {
@@ -110,14 +116,15 @@ std::string path_grid_csv(const PathResult& result, double dh, double depth_max)
     for (std::size_t i = 0; i < pts.size(); ++i) {
       const double d0 = pts[i].state.depth;
       if (std::abs(d0 - d) <= 1e-9 * (1 + d)) {  // a converged point
-        for (double v : path_point_values(pts[i])) os << v << ',';
+        for (double v : path_point_values(pts[i], result.stability)) os << v << ',';
         os << "0\n";
         break;
       }
       if (i + 1 == pts.size()) break;
       const double d1 = pts[i + 1].state.depth;
       if ((d - d0) * (d - d1) < 0) {  // inside this segment: first passage
-        for (double v : interpolate(pts[i], pts[i + 1], d, result.monitor_names)) os << v << ',';
+        for (double v : interpolate(pts[i], pts[i + 1], d, result.monitor_names, result.stability))
+          os << v << ',';
         os << "1\n";
         break;
       }
@@ -133,16 +140,26 @@ nlohmann::json events_json(const PathResult& result) {
       const double v = monitor_value(e.monitors, result.monitor_names, name);
       return std::isnan(v) ? 0.0 : v;
     };
-    events.push_back({{"type", e.name},
-                      {"monitor", e.monitor},
-                      {"against", e.against},
-                      {column_name(PathColumn::kDepth), e.p},
-                      {column_name(PathColumn::kForce), at(column_name(PathColumn::kForce))},
-                      {column_name(PathColumn::kK11), at(column_name(PathColumn::kK11))},
-                      {column_name(PathColumn::kK22), at(column_name(PathColumn::kK22))},
-                      {"step", e.step},
-                      {"located", e.located},
-                      {"accuracy", e.accuracy}});
+    nlohmann::json event = {{"type", e.name},
+                            {"monitor", e.monitor},
+                            {"against", e.against},
+                            {column_name(PathColumn::kDepth), e.p},
+                            {column_name(PathColumn::kForce), at(column_name(PathColumn::kForce))},
+                            {column_name(PathColumn::kK11), at(column_name(PathColumn::kK11))},
+                            {column_name(PathColumn::kK22), at(column_name(PathColumn::kK22))},
+                            {"step", e.step},
+                            {"located", e.located},
+                            {"accuracy", e.accuracy}};
+    if (e.type == cont::EventType::kStabilityChange) {
+      // What changed and how (docs/theory/continuation.md 10); the mode is the event's VTU field.
+      event["criticality"] = cont::criticality_name(e.criticality);
+      event["negative_before"] = e.negative_before;
+      event["negative_after"] = e.negative_after;
+      event["eigenvalue"] =
+          std::isfinite(e.eigenvalue) ? nlohmann::json(e.eigenvalue) : nlohmann::json(nullptr);
+      event["tangent_depth"] = e.tangent_p;
+    }
+    events.push_back(event);
   }
   return events;
 }
@@ -168,7 +185,8 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
   nlohmann::json points = nlohmann::json::array();
   for (const PathPoint& p : result.points) {
     nlohmann::json row;
-    for (const ColumnSpec& c : path_columns()) row[c.name] = column_value(c, p);
+    for (const ColumnSpec* c : written_columns(result.stability))
+      row[c->name] = column_value(*c, p);
     points.push_back(row);
   }
   return {{"case", setup.spec.file},

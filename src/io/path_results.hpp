@@ -25,8 +25,8 @@ namespace si {
 const char* run_method_name(RunMethod method);
 const char* run_status_name(RunStatus status);
 
-// The header line of path.csv (without newline).
-std::string path_csv_header();
+// The header line of path.csv (without newline); `stability`: with the stability columns.
+std::string path_csv_header(bool stability = false);
 std::string path_csv(const PathResult& result);
 std::string path_grid_csv(const PathResult& result, double dh, double depth_max);
 nlohmann::json events_json(const PathResult& result);

@@ -84,7 +84,11 @@ TEST(PathColumns, NamesAreUniqueAndEveryColumnIsComputedAndRestored) {
     }
   }
   EXPECT_EQ(std::string(column_name(PathColumn::kForce)), "force_N");
-  EXPECT_EQ(path_columns().back().id, PathColumn::kK22ContactMax);
+  EXPECT_EQ(path_columns().back().id, PathColumn::kLowestEigenvalue);
+  // The stability columns come last and only they are optional (path.stability).
+  EXPECT_EQ(written_columns(false).size(), path_columns().size() - 2);
+  EXPECT_EQ(written_columns(true).size(), path_columns().size());
+  EXPECT_TRUE(path_column(PathColumn::kStable).stability);
 }
 
 // The checkpoint's point values restore every column (distinct values, so a swap shows).
@@ -93,6 +97,10 @@ TEST(PathColumns, PointValuesRoundTrip) {
   for (std::size_t i = 0; i < path_columns().size(); ++i) v.push_back(1.5 + static_cast<double>(i));
   v[static_cast<std::size_t>(PathColumn::kContactNodes)] = 7;
   v[static_cast<std::size_t>(PathColumn::kIterations)] = 3;
+  v[static_cast<std::size_t>(PathColumn::kStable)] = 1;
+  EXPECT_EQ(path_point_values(path_point_from_values(v, true), true), v);
+  // Without stability the values stop before its columns.
+  v.resize(written_columns(false).size());
   EXPECT_EQ(path_point_values(path_point_from_values(v)), v);
   EXPECT_THROW(path_point_from_values(std::vector<double>(3, 0.0)), Error);
 }
