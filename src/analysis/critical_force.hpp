@@ -3,10 +3,10 @@
 // "Curve features"; issue 15: the raw sign changes of d2T/dk2 sit on the kinks where nodes enter
 // contact and inside exactly linear segments, and were reported as critical forces).
 //
-// Continuation runs locate it with the library's curve-feature detector (indentation_run.cpp
-// asks for the inflections). The depth grids (the linear fast path, the active-set grid) have no
-// continuation to re-solve in; here, on the grid's points, the library's rules with derivatives
-// in the depth by three-point divided differences:
+// Found on the path's converged points (every method), with the library's curve-feature rules
+// (cont::feature_value, cont::resolved_sign) and derivatives in the depth by three-point divided
+// differences; the library's located inflections were 5.8 times the main job's time
+// (indentation_run.cpp):
 //  1. noise: the second differences' error from the solves' accuracy (1e-9 of the coordinate's
 //     largest magnitude per point) - inside an exactly linear segment g is roundoff;
 //  2. scale: the curvature of the (k, T) curve in its own scale (each coordinate over its range
@@ -14,10 +14,11 @@
 //  4. kinks: a stencil across a change of the contact set (a kink: one-sided derivatives jump)
 //     has no sign; a sign change is an inflection only between two signed points whose stencils
 //     share one contact set.
-// Rule 3 (confirmation by re-solving inside the step) needs the continuation: a grid's
-// inflection is not located (accuracy = the bracket's depth width). With linear kinematics
-// T and k are linear in the depth on each contact set, so the linear path never has one: "none"
-// is the answer, said plainly.
+// Rule 3 (confirmation by re-solving inside the step) is not applied: an inflection is not
+// located (accuracy = the bracket's depth width). Points restored from a checkpoint carry no
+// contact set and no sign (a resumed run reports none before its checkpoint). With linear
+// kinematics T and k are linear in the depth on each contact set, so the linear path never has one:
+// "none" is the answer, said plainly.
 #pragma once
 
 #include <string>

@@ -223,11 +223,11 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   // residual decrease per iteration on the paper's cap). Allow any step the line search accepts.
   c.newton.max_step = 1e12;
   c.extremum_monitors = {column_name(PathColumn::kForce)};
-  // Inflections of T_N against k11, k22 (the paper's critical force) by the curve-feature
-  // detector: reported only where resolved against the curve's own scale, confirmed inside the
-  // step, and never across a contact-set change (a kink: the signature event instead).
-  const std::string force = column_name(PathColumn::kForce);
-  c.inflections = {{force, column_name(PathColumn::kK11)}, {force, column_name(PathColumn::kK22)}};
+  // Inflections of T_N against k11, k22 (the critical force) come from the points afterwards,
+  // by the curve-feature rules (critical_force.hpp). The library's located ones (inflections)
+  // re-solve inside every step with a resolved sign change and evaluate second derivatives at
+  // every point: measured 5.8 times the main job's time, and the re-solves change the solver's
+  // warm state (the path's last bits, at the 1e-10 tolerance).
   c.detect_signature_changes = true;
   c.locate_signature_changes = false;  // contact grows node by node: report, do not bisect
   if (c.method == cont::Method::kNatural) c.parameter_values = depth_grid(path);
@@ -389,13 +389,11 @@ PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& cal
   // A power-law local contact is nonlinear even with linear kinematics: no fast path then.
   const bool fast =
       setup.model.kinematics == Kinematics::kLinear && setup.problem->num_local_unknowns() == 0;
-  const bool grid = fast || setup.spec.contact.solver == ContactSolver::kActiveSet;
-  PathResult r = fast   ? run_linear(setup, callback)
-                 : grid ? run_active_set(setup, callback)
-                        : run_continuation(setup, callback, control);
-  // The depth grids' critical force from their points (the continuation located its own).
+  PathResult r = fast ? run_linear(setup, callback)
+                 : setup.spec.contact.solver == ContactSolver::kActiveSet
+                     ? run_active_set(setup, callback)
+                     : run_continuation(setup, callback, control);
   for (int k : {0, 2}) {
-    if (!grid) break;
     const std::vector<cont::Event> found = critical_force_events(r.points, k);
     r.events.insert(r.events.end(), found.begin(), found.end());
   }
