@@ -33,6 +33,8 @@ MAX_STRESS_INDEX = "max_stress_index"
 TSAI_WU_INDEX = "tsai_wu_index"
 HASHIN_INDEX = "hashin_index"
 DELAMINATION_INDEX = "delamination_index"
+STABLE = "stable"
+LOWEST_EIGENVALUE = "lowest_eigenvalue"
 
 # All columns, in path.csv's order.
 PATH_COLUMNS = (
@@ -65,6 +67,8 @@ PATH_COLUMNS = (
     TSAI_WU_INDEX,
     HASHIN_INDEX,
     DELAMINATION_INDEX,
+    STABLE,
+    LOWEST_EIGENVALUE,
 )
 
 UNITS = {
@@ -97,4 +101,6 @@ UNITS = {
     TSAI_WU_INDEX: "-",
     HASHIN_INDEX: "-",
     DELAMINATION_INDEX: "-",
+    STABLE: "-",
+    LOWEST_EIGENVALUE: "N/mm",
 }

@@ -49,19 +49,40 @@ IndentationOptions options_of(const IndentationCase& c, int threads,
   return o;
 }
 
-// The accumulated indenter work and the point, appended to the result.
+// A point's stability as the continuation computed it; negative = -1: not computed.
+struct PointStability {
+  int negative = -1;
+  bool stable = false;
+  double lowest = std::nan("");
+};
+
+PointStability stability_of(const cont::Point& pt) {
+  return {pt.negative_eigenvalues, pt.stable, pt.lowest_eigenvalue};
+}
+
+// The accumulated indenter work and the point, appended to the result. With path.stability
+// (result.stability), a point the continuation did not analyse (the depth grids') is analysed
+// here.
 class PathRecorder {
  public:
   PathRecorder(PathResult& result, const PathCallback& callback)
       : result_(result), callback_(callback) {}
   bool add(IndentationProblem& problem, const cont::Vector& z, double h, int iterations,
-           double step, const Eigen::VectorXd& depth_slopes = {}) {
+           double step, const Eigen::VectorXd& depth_slopes = {}, PointStability stability = {}) {
     PathPoint p;
     p.index = static_cast<int>(result_.points.size());
     p.state = problem.evaluate(z, h);
     p.iterations = iterations;
     p.step = step;
     p.depth_slopes = depth_slopes;
+    if (result_.stability && stability.negative < 0) {
+      cont::Stability s;
+      if (problem.stability(z, h, 1, s))
+        stability = {s.negative, s.negative == 0 && s.zero == 0, s.eigenvalues[0]};
+    }
+    p.negative_eigenvalues = stability.negative;
+    p.stable = stability.stable;
+    p.lowest_eigenvalue = stability.lowest;
     if (!result_.points.empty()) {
       const IndentationState& prev = result_.points.back().state;
       p.work = result_.points.back().work +
@@ -94,7 +115,7 @@ void locate_onsets(IndentationSetup& s, PathResult& r, const cont::Vector& z_pre
                    const DepthSolve& solve) {
   const PathPoint& a = r.points[r.points.size() - 2];
   const PathPoint& b = r.points.back();
-  const std::vector<PathColumn> columns = run_columns(r.criteria);
+  const std::vector<PathColumn> columns = result_columns(r);
   for (Criterion c : r.criteria) {
     const double fa = a.state.failure[static_cast<int>(c)].index - 1;
     const double fb = b.state.failure[static_cast<int>(c)].index - 1;
@@ -138,11 +159,35 @@ void locate_onsets(IndentationSetup& s, PathResult& r, const cont::Vector& z_pre
   }
 }
 
+// The stability changes between the points of a depth grid, not located (no continuation to
+// bisect along): one event per change of the negative count, at the later point.
+std::vector<cont::Event> grid_stability_events(const PathResult& r) {
+  std::vector<cont::Event> events;
+  for (std::size_t i = 1; i < r.points.size(); ++i) {
+    const PathPoint &a = r.points[i - 1], &b = r.points[i];
+    if (a.negative_eigenvalues < 0 || b.negative_eigenvalues < 0 ||
+        a.negative_eigenvalues == b.negative_eigenvalues)
+      continue;
+    cont::Event e;
+    e.type = cont::EventType::kStabilityChange;
+    e.name = cont::event_type_name(e.type);
+    e.p = b.state.depth;
+    e.monitors = monitor_values(b.state, result_columns(r));
+    e.step = static_cast<int>(i);
+    e.accuracy = b.state.depth - a.state.depth;
+    e.negative_before = a.negative_eigenvalues;
+    e.negative_after = b.negative_eigenvalues;
+    events.push_back(e);
+  }
+  return events;
+}
+
 // The depth grid, one solve per depth, from the undeformed start.
 PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback, RunMethod method,
                           const DepthSolve& solve) {
   PathResult r;
   r.method = method;
+  r.stability = s.spec.path.stability;
   r.monitor_names = s.problem->monitor_names();
   r.criteria = monitored_criteria(s.spec);
   PathRecorder rec(r, callback);
@@ -169,6 +214,11 @@ PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback, Run
     locate_onsets(s, r, z_previous, method == RunMethod::kLinearFastPath ? solve : DepthSolve());
     previous = h;
   }
+  // Beside the onsets found on the way, in depth order.
+  const std::vector<cont::Event> changes = grid_stability_events(r);
+  r.events.insert(r.events.end(), changes.begin(), changes.end());
+  std::stable_sort(r.events.begin(), r.events.end(),
+                   [](const cont::Event& a, const cont::Event& b) { return a.p < b.p; });
   finish(r, true, RunStatus::kCompleted, "");
   return r;
 }
@@ -234,11 +284,16 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   if (s.spec.damage)
     for (Criterion k : s.spec.damage->criteria)
       c.level_crossings.push_back({column_name(failure_column(k)), 1.0});
-  // Inflections of T_N against k11, k22 (the critical force) come from the points afterwards
-  // (critical_force.hpp): located ones would sit on every contact-set change.
+  // Inflections of T_N against k11, k22 (the critical force) come from the points afterwards,
+  // by the curve-feature rules (critical_force.hpp). The library's located ones (inflections)
+  // re-solve inside every step with a resolved sign change and evaluate second derivatives at
+  // every point: measured 5.8 times the main job's time, and the re-solves change the solver's
+  // warm state (the path's last bits, at the 1e-10 tolerance).
   c.detect_signature_changes = true;
   c.locate_signature_changes = false;  // contact grows node by node: report, do not bisect
   if (c.method == cont::Method::kNatural) c.parameter_values = depth_grid(path);
+  // The lowest mode: a change of the count by more than one is located by bisection on it.
+  c.stability_modes = path.stability ? 1 : 0;
   return c;
 }
 
@@ -257,8 +312,7 @@ Eigen::VectorXd depth_slopes(const cont::Point& pt) {
 nlohmann::json path_attachment(const IndentationProblem& problem, const PathResult& r,
                                const PathControl& control) {
   nlohmann::json points = nlohmann::json::array();
-  for (const PathPoint& p : r.points)
-    points.push_back(path_point_values(p, run_columns(r.criteria)));
+  for (const PathPoint& p : r.points) points.push_back(path_point_values(p, result_columns(r)));
   return {{"candidates", problem.candidates()},
           {"points", points},
           {"record", control.save_record ? control.save_record() : nlohmann::json()}};
@@ -289,7 +343,8 @@ cont::Checkpoint restore(const PathControl& control, IndentationProblem& problem
   problem.restore_candidates(candidates);
   for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
     r.points.push_back(
-        path_point_from_values(a["points"][i].get<std::vector<double>>(), run_columns(r.criteria)));
+        path_point_from_values(a["points"][i].get<std::vector<double>>(), result_columns(r)));
+    r.points.back().negative_eigenvalues = c.branch.points[i].negative_eigenvalues;
     r.points.back().index = static_cast<int>(i);
     r.points.back().depth_slopes = depth_slopes(c.branch.points[i]);
   }
@@ -309,6 +364,7 @@ std::string end_reason(const cont::Branch& b, const PathSpec& path) {
 PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
                             const PathControl& control) {
   PathResult r;
+  r.stability = s.spec.path.stability;
   cont::Settings settings = continuation_settings(s);
   r.method =
       settings.method == cont::Method::kNatural ? RunMethod::kNatural : RunMethod::kPseudoArclength;
@@ -323,7 +379,8 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   settings.checkpoint_attachment = [&] { return path_attachment(*s.problem, r, control); };
   PathRecorder rec(r, callback);
   const cont::Callback on_point = [&](const cont::Point& pt, const cont::Branch&) {
-    return rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step, depth_slopes(pt));
+    return rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step, depth_slopes(pt),
+                   stability_of(pt));
   };
   const bool natural = settings.method == cont::Method::kNatural;
   cont::Branch b;

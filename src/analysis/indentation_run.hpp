@@ -13,6 +13,7 @@
 // The depth grid is path.depths, or 0, step, 2 step, ..., depth_max.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -59,6 +60,12 @@ struct PathPoint {
   // d(monitor)/d(depth) along the branch, one per PathResult::monitor_names (continuation runs;
   // NaN where the branch is nearly vertical in depth, at a fold); empty where unknown.
   Eigen::VectorXd depth_slopes;
+  // path.stability: the tangent restricted to the active contacts (IndentationProblem::stability)
+  // - its number of negative eigenvalues (-1: not computed), stable (none negative or zero), and
+  // its lowest eigenvalue (N/mm in the shell's chart coordinates).
+  int negative_eigenvalues = -1;
+  bool stable = false;
+  double lowest_eigenvalue = std::nan("");
 };
 
 // How a path was computed (see the header): the linear fast path, the active-set grid, or a
@@ -90,6 +97,8 @@ struct PathResult {
   std::string reason;  // why it stopped early; empty when completed
   // The problem's unknowns at the last point (to write its fields); empty if there is none.
   cont::Vector final_unknowns;
+  // path.stability: every point has its stability, and the results carry its columns.
+  bool stability = false;
 };
 
 // Called after each accepted point with the point and the problem's unknowns; returning false

@@ -165,6 +165,32 @@ std::vector<ColumnSpec> make_columns() {
                "largest quadratic interlaminar (Brewer-Lagace) index on the interfaces" + index,
                failure_index<3>, nullptr, restore_failure_index<3>, true, G::kHermite,
                Criterion::kQuadraticDelamination});
+  // The stability of the point (path.stability; docs/theory/continuation.md 9, 12).
+  ColumnSpec stable{PathColumn::kStable,
+                    "stable",
+                    "-",
+                    "1 if the point is a stable equilibrium on its contact set: the tangent "
+                    "restricted to the directions that keep the pressing contacts has no "
+                    "negative and no numerically zero eigenvalue; else 0 (written with "
+                    "`path.stability: true`; path_grid.csv: 1 only between two stable points)",
+                    nullptr,
+                    [](const PathPoint& p) { return p.stable ? 1.0 : 0.0; },
+                    [](PathPoint& p, double v) { p.stable = v != 0; }};
+  stable.grid = G::kMinimum;
+  stable.stability = true;
+  ColumnSpec lowest{PathColumn::kLowestEigenvalue,
+                    "lowest_eigenvalue",
+                    "N/mm",
+                    "lowest eigenvalue of that restricted tangent (the Hessian of the energy in "
+                    "the shell's chart coordinates, mm and rad, so N/mm for a mode of "
+                    "translations); it crosses zero where the point loses stability (written "
+                    "with `path.stability: true`)",
+                    nullptr,
+                    [](const PathPoint& p) { return p.lowest_eigenvalue; },
+                    [](PathPoint& p, double v) { p.lowest_eigenvalue = v; }};
+  lowest.stability = true;
+  c.push_back(stable);
+  c.push_back(lowest);
   for (std::size_t i = 0; i < c.size(); ++i)
     SI_ASSERT(static_cast<std::size_t>(c[i].id) == i);  // the table is in PathColumn's order
   return c;
@@ -189,13 +215,19 @@ double column_value(const ColumnSpec& c, const PathPoint& p) {
   return c.of_state ? c.of_state(p.state) : c.of_point(p);
 }
 
-std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored) {
+std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored, bool stability) {
   std::vector<PathColumn> out;
-  for (const ColumnSpec& c : path_columns())
+  for (const ColumnSpec& c : path_columns()) {
+    if (c.stability && !stability) continue;
     if (!c.criterion ||
         std::find(monitored.begin(), monitored.end(), *c.criterion) != monitored.end())
       out.push_back(c.id);
+  }
   return out;
+}
+
+std::vector<PathColumn> result_columns(const PathResult& r) {
+  return run_columns(r.criteria, r.stability);
 }
 
 const std::vector<PathColumn>& base_columns() {

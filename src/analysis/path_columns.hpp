@@ -48,7 +48,10 @@ enum class PathColumn {
   kMaxStressIndex,
   kTsaiWuIndex,
   kHashinIndex,
-  kDelaminationIndex
+  kDelaminationIndex,
+  // The point's stability, only in runs with path.stability: true.
+  kStable,
+  kLowestEigenvalue
 };
 
 // How path_grid.csv interpolates a column between two converged points (docs/results.md).
@@ -58,7 +61,8 @@ enum class GridInterpolation {
   kHermiteForce,  // the same with the force as slope (the work: dW/dh = T_N)
   // The same where the local energy is zero at both ends (the strain energy without a local
   // law: dU/dh = T_N at equilibrium), linear otherwise.
-  kHermiteForceWithoutLocalLaw
+  kHermiteForceWithoutLocalLaw,
+  kMinimum  // the smaller end (a flag: 1 inside only if 1 at both ends)
 };
 
 struct ColumnSpec {
@@ -74,6 +78,9 @@ struct ColumnSpec {
   GridInterpolation grid = GridInterpolation::kLinear;
   // A failure index: present only in the runs that monitor this criterion.
   std::optional<Criterion> criterion = std::nullopt;
+  // Written only by runs that compute the points' stability (path.stability: true), so that a
+  // run without it writes exactly what it wrote before the columns existed.
+  bool stability = false;
 };
 
 // All columns, in path.csv's order (the order of PathColumn).
@@ -82,9 +89,13 @@ const ColumnSpec& path_column(PathColumn id);
 const char* column_name(PathColumn id);
 double column_value(const ColumnSpec& c, const PathPoint& p);
 
-// The columns of a run, in table order: those of every run, and the failure index of each
-// criterion it monitors. base_columns(): a run without damage (run_columns({})).
-std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored);
+// The columns of a run, in table order: those of every run, the failure index of each
+// criterion it monitors, and with `stability` (path.stability) the stability columns.
+// base_columns(): a run without damage (run_columns({})).
+std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored,
+                                    bool stability = false);
+// The columns of a result: its monitored criteria's, and the stability columns if it has them.
+std::vector<PathColumn> result_columns(const PathResult& r);
 const std::vector<PathColumn>& base_columns();
 // The column of a criterion's failure index.
 PathColumn failure_column(Criterion criterion);

@@ -29,9 +29,11 @@
 namespace si {
 namespace {
 
-// The VTU of one point: resultants plus the contact pressure and force at every node.
+// The VTU of one point: resultants plus the contact pressure and force at every node, and any
+// `extra` fields.
 void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& s,
-                     const IndentationState& st, const cont::Vector& z) {
+                     const IndentationState& st, const cont::Vector& z,
+                     const VtuFields& extra = {}) {
   const IndentationProblem& p = *s.problem;
   const std::vector<NodeState> state = p.node_states(z);
   VtuFields fields =
@@ -45,7 +47,44 @@ void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& 
   fields.point_data["contact_pressure"] = pressure;
   fields.point_data["contact_force"] = force;
   add_damage_fields(s, st, z, fields);
+  for (const auto& [name, values] : extra.point_data) fields.point_data[name] = values;
   write_vtu(file.string(), s.model.mesh, state, fields);
+}
+
+// A stability event's mode as a nodal field: the translations of the mode (its shell part, chart
+// coordinates), scaled so that the largest is 1 (a shape; its sign is Lanczos').
+Eigen::MatrixXd mode_translations(const IndentationProblem& p, const cont::Vector& mode,
+                                  int nodes) {
+  Eigen::MatrixXd u = Eigen::MatrixXd::Zero(nodes, 3);
+  for (int n = 0; n < nodes; ++n)
+    for (int l = 0; l < 3; ++l) {
+      const int eq = p.dofs().equation(DofMap::dof(n, l));
+      if (eq >= 0 && eq < mode.size()) u(n, l) = mode[eq];
+    }
+  const double largest = u.cwiseAbs().maxCoeff();
+  return largest > 0 ? Eigen::MatrixXd(u / largest) : u;
+}
+
+// One VTU per stability change (stability_NN.vtu, at the event's point, with its critical mode
+// as the point field `critical_mode`); returns the files' names. The problem may have grown its
+// candidate set since the event: the appended multipliers are zero at the event.
+std::vector<std::string> write_stability_vtus(const std::filesystem::path& dir, IndentationSetup& s,
+                                              const PathResult& r) {
+  std::vector<std::string> names;
+  IndentationProblem& p = *s.problem;
+  for (const cont::Event& e : r.events) {
+    if (e.type != cont::EventType::kStabilityChange || e.x.size() == 0 || e.x.size() > p.size())
+      continue;
+    cont::Vector z = cont::Vector::Zero(p.size());
+    z.head(e.x.size()) = e.x;
+    char name[32];
+    std::snprintf(name, sizeof name, "stability_%02d.vtu", static_cast<int>(names.size()) + 1);
+    VtuFields extra;
+    extra.point_data["critical_mode"] = mode_translations(p, e.mode, s.model.mesh.num_nodes());
+    write_point_vtu(dir / name, s, p.evaluate(z, e.p), z, extra);
+    names.push_back(name);
+  }
+  return names;
 }
 
 std::string pvd_text(const std::vector<std::pair<double, std::string>>& files) {
@@ -247,6 +286,9 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
       << setup.problem->num_shell_unknowns() << " shell unknowns, "
       << setup.problem->candidates().size() << " contact candidates, first touch at travel "
       << setup.problem->first_touch() << " mm\n";
+  if (cf.path.stability && setup.model.symmetry_factor > 1)
+    err << "note: path.stability on a symmetric part of the shell sees only the modes symmetric "
+           "about its planes (mesh.symmetry: full for all of them)\n";
 
   const OutputChoice formats = output_choice(cf.output);
   const CaseDigest digest = case_digest(text);
@@ -308,10 +350,18 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   for (const cont::Event& e : r.events)
     if (e.type != cont::EventType::kSignatureChange)
       out << "event: " << e.name << (e.monitor.empty() ? "" : " of " + e.monitor)
-          << (e.against.empty() ? "" : " against " + e.against) << " at depth " << e.p << " mm\n";
+          << (e.against.empty() ? "" : " against " + e.against)
+          << (e.type == cont::EventType::kStabilityChange
+                  ? " (" + cont::criticality_name(e.criticality) + ")"
+                  : "")
+          << " at depth " << e.p << " mm\n";
 
-  const std::vector<std::string> written =
-      write_path_files(dir, formats, setup, r, vtus, damage_rows);
+  std::vector<std::string> written = write_path_files(dir, formats, setup, r, vtus, damage_rows);
+  if (formats.vtu) {
+    const std::vector<std::string> modes = write_stability_vtus(dir, setup, r);
+    if (!modes.empty())
+      written.push_back(std::to_string(modes.size()) + " stability VTU file(s) (critical_mode)");
+  }
   err << "wrote ";
   for (std::size_t i = 0; i < written.size(); ++i) err << (i ? ", " : "") << written[i];
   err << (written.empty() ? "nothing (output.formats)" : "") << "\n";

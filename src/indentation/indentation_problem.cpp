@@ -254,15 +254,16 @@ std::vector<int> IndentationProblem::signature(const cont::Vector& z, double h) 
   return active;
 }
 
-SparseMatrix IndentationProblem::active_constraint_gradients(const cont::Vector& z,
-                                                             double h) const {
+SparseMatrix IndentationProblem::active_constraint_gradients(
+    const cont::Vector& z, double h, std::vector<int>* multiplier_index) const {
   const std::vector<NodeState> s = node_states(z);
   const TermPoint p{z, h, s};
   Triplets t;
-  int rows = 0;
+  std::vector<int> rows;
   for (const auto& term : parts_.terms) term->active_gradients(p, t, rows);
-  SparseMatrix G(rows, shell_.size());
+  SparseMatrix G(static_cast<Eigen::Index>(rows.size()), shell_.size());
   G.setFromTriplets(t.begin(), t.end());
+  if (multiplier_index) *multiplier_index = std::move(rows);
   return G;
 }
 

@@ -74,10 +74,29 @@ class IndentationProblem : public cont::Problem {
   // terms' Newton guesses, the evaluate() cache): a resumed run, which starts without them, then
   // goes on bit for bit as the uninterrupted one.
   void reset_solver_caches() override;
-  // The gradients of the active contact constraints with respect to the shell's free dofs (one
-  // row per active constraint; spatial increments, before the chart transform), for the tangent
-  // restricted to them.
-  SparseMatrix active_constraint_gradients(const cont::Vector& z, double h) const;
+  // The gradients of the strongly active contact constraints with respect to the shell's free
+  // dofs (one row per active constraint; spatial increments, before the chart transform), for
+  // the tangent restricted to them; `multiplier_index` (if given) gets each row's multiplier in z.
+  SparseMatrix active_constraint_gradients(const cont::Vector& z, double h,
+                                           std::vector<int>* multiplier_index = nullptr) const;
+
+  // Stability of a converged point (indentation_stability.cpp; docs/theory/continuation.md 12):
+  // the Hessian of the Lagrangian in the shell's chart coordinates restricted to the strongly
+  // active contact constraints. Provided without a local contact law (whose approach alpha and
+  // compliant rows are not a constraint on the shell alone).
+  bool provides_stability() const override;
+  bool stability(const cont::Vector& z, double h, int modes, cont::Stability& out) override;
+  // What stability() analyses: H (shell chart coordinates, symmetric, both triangles), the
+  // active constraint rows A in the same coordinates, each row's multiplier in z, and the
+  // relative asymmetry |H0 - H0'|_F / |H0|_F of T' J_xx before its symmetric part H was taken
+  // (the Newton residual's order at a converged point).
+  struct StabilityMatrices {
+    SparseMatrix H;
+    SparseMatrix A;
+    std::vector<int> multipliers;
+    double asymmetry = 0;
+  };
+  StabilityMatrices stability_matrices(const cont::Vector& z, double h);
 
   // The starting point: undeformed, no contact force (a solution at h = 0).
   cont::Vector initial_point() const;

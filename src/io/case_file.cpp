@@ -290,11 +290,13 @@ std::vector<double> read_depths(const MapReader& map, double depth_max) {
   return depths;
 }
 
-PathSpec read_path(const MapReader& top) {
+// A local contact law's approach and compliant rows are no constraint on the shell alone: the
+// restricted tangent (docs/theory/continuation.md 12) is defined without one.
+PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
   PathSpec path;
   const auto map = section(top, "path");
   if (!map) return path;
-  map->allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths"});
+  map->allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths", "stability"});
   path.method = map->choice_or("method", kMethods, path.method);
   path.depth_max = map->positive_or("depth_max", Dimension::kLength, path.depth_max);
   path.step = map->positive_or("step", Dimension::kLength, path.step);
@@ -318,6 +320,12 @@ PathSpec read_path(const MapReader& top) {
                     format_quantity(path.step_max, Dimension::kLength) + "]",
                 map->where("step"));
   if (map->has("depths")) path.depths = read_depths(*map, path.depth_max);
+  path.stability = map->choice_or("stability", kBooleans, path.stability);
+  if (path.stability && contact.local != LocalContactModel::kNone)
+    throw_input(
+        "the stability of a point is defined without a local contact law (its approach is no "
+        "constraint on the shell); set `contact.local: none` or `stability: false`",
+        map->where("stability"));
   return path;
 }
 
@@ -427,7 +435,7 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   MeshSpec mesh = read_mesh(top, shell.type);
   IndenterSpec indenter = read_indenter(top);
   ContactSpec contact = read_contact(top, kinematics, indenter);
-  PathSpec path = read_path(top);
+  PathSpec path = read_path(top, contact);
   OutputSpec output = read_output(top);
   std::optional<LoadSpec> load = read_load(top);
   std::optional<DamageSpec> damage = read_damage(top, laminate);

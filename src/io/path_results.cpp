@@ -1,5 +1,6 @@
 #include "io/path_results.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -54,6 +55,9 @@ std::vector<double> interpolate(const PathPoint& a, const PathPoint& b, double d
   for (std::size_t c = 0; c < columns.size(); ++c) switch (columns[c].grid) {
       case GridInterpolation::kLinear:
         break;
+      case GridInterpolation::kMinimum:
+        out[c] = std::min(va[c], vb[c]);
+        break;
       case GridInterpolation::kHermite:
         hermite(c, monitor_value(a.depth_slopes, monitors, columns[c].name),
                 monitor_value(b.depth_slopes, monitors, columns[c].name));
@@ -84,18 +88,17 @@ const char* run_status_name(RunStatus status) {
   return names[static_cast<int>(status)];
 }
 
-std::string path_csv_header(const std::vector<Criterion>& monitored) {
+std::string path_csv_header(const std::vector<PathColumn>& columns) {
   std::string h;
-  for (PathColumn c : run_columns(monitored))
-    h += (h.empty() ? "" : ",") + std::string(column_name(c));
+  for (PathColumn c : columns) h += (h.empty() ? "" : ",") + std::string(column_name(c));
   return h;
 }
 
 std::string path_csv(const PathResult& result) {
   std::ostringstream os;
   os.precision(12);
-  os << path_csv_header(result.criteria) << '\n';
-  const std::vector<PathColumn> columns = run_columns(result.criteria);
+  os << path_csv_header(result_columns(result)) << '\n';
+  const std::vector<PathColumn> columns = result_columns(result);
   for (const PathPoint& p : result.points) {
     const std::vector<double> v = path_point_values(p, columns);
     for (std::size_t i = 0; i < v.size(); ++i) os << (i ? "," : "") << v[i];
@@ -107,8 +110,8 @@ std::string path_csv(const PathResult& result) {
 std::string path_grid_csv(const PathResult& result, double dh, double depth_max) {
   std::ostringstream os;
   os.precision(12);
-  os << path_csv_header(result.criteria) << ",interpolated\n";
-  const std::vector<PathColumn> columns = run_columns(result.criteria);
+  os << path_csv_header(result_columns(result)) << ",interpolated\n";
+  const std::vector<PathColumn> columns = result_columns(result);
   const auto& pts = result.points;
   const int n = static_cast<int>(std::floor(depth_max / dh + 1e-9));
   for (int k = 0; k <= n; ++k) {
@@ -151,8 +154,18 @@ nlohmann::json events_json(const PathResult& result) {
                       {"step", e.step},
                       {"located", e.located},
                       {"accuracy", e.accuracy}});
+    nlohmann::json& event = events.back();
+    if (e.type == cont::EventType::kStabilityChange) {
+      // What changed and how (docs/theory/continuation.md 10); the mode is the event's VTU field.
+      event["criticality"] = cont::criticality_name(e.criticality);
+      event["negative_before"] = e.negative_before;
+      event["negative_after"] = e.negative_after;
+      event["eigenvalue"] =
+          std::isfinite(e.eigenvalue) ? nlohmann::json(e.eigenvalue) : nlohmann::json(nullptr);
+      event["tangent_depth"] = e.tangent_p;
+    }
     for (const DamageOnset& o : result.damage.onsets)  // where and what the damage is
-      if (o.event == static_cast<int>(i)) events.back().update(onset_json(o));
+      if (o.event == static_cast<int>(i)) event.update(onset_json(o));
   }
   return events;
 }
@@ -187,7 +200,7 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
   nlohmann::json points = nlohmann::json::array();
   for (const PathPoint& p : result.points) {
     nlohmann::json row;
-    for (PathColumn id : run_columns(result.criteria))
+    for (PathColumn id : result_columns(result))
       row[column_name(id)] = column_value(path_column(id), p);
     points.push_back(row);
   }

@@ -327,6 +327,12 @@ std::vector<BadInput> case_file_rows() {
               {"case.yaml:3", "path.depths[1]", "increase strictly"}),
       run_row("DepthBeyondDepthMax", kHead + "path: {depth_max: 1 mm, depths: [2 mm]}\n",
               {"case.yaml:3", "path.depths[0]", "(0, depth_max"}),
+      // Issue 15: the stability of the points.
+      run_row("StabilityNotABoolean", kHead + "path: {stability: yes please}\n",
+              {"case.yaml:3", "path.stability", "unknown value"}),
+      run_row("StabilityWithALocalLaw",
+              kHead + "contact: {local: hertz}\npath: {stability: true}\n",
+              {"case.yaml:4", "path.stability", "contact.local: none"}),
       run_row("VtuEveryNegative", kHead + "output: {vtu_every: -1}\n",
               {"case.yaml:3", "output.vtu_every", ">= 0"}),
       run_row("VtuEveryNotWhole", kHead + "output: {vtu_every: 1.5}\n",
