@@ -59,6 +59,8 @@ def main():
     h, force = result["depth_mm"], result["force_N"]
     print(f"force at {h[-1]:.2f} mm: {force[-1]:.1f} N; maximum {force.max():.1f} N")
     for e in result.events:
+        if e["type"] == "signature_change":  # the Jacobian's inertia: listed in events.json only
+            continue
         print(f"event: {e['type']} {e['monitor']} at depth {e['depth_mm']:.3f} mm, "
               f"force {e['force_N']:.1f} N")
     for path in result.write(args.out):

@@ -17,6 +17,7 @@ execute_process(
   COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${path} ${PYTHON} -c
           "import shellindent as s; assert s.__file__.startswith('${path}'), s.__file__; \
 print(s.__file__, s.section(s.default_case())['vam']['A_R'][0, 0])"
+  WORKING_DIRECTORY ${PREFIX}  # not the build tree's python/, which holds a package too
   RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the installed package does not import or run from ${path}")
