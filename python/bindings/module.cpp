@@ -11,4 +11,5 @@ PYBIND11_MODULE(_core, m) {
   si::py::bind_run(m);
   si::py::bind_section(m);
   si::py::bind_fit(m);
+  si::py::bind_study(m);
 }

@@ -98,6 +98,11 @@ py::tuple run_case(const CaseHandle& c, const py::object& progress, int threads,
   raw["events_json"] = events_json(r).dump(2) + "\n";
   raw["path_json"] = path_json(*setup, r).dump(2) + "\n";
   raw["path_csv"] = path_csv(r);
+  // As `shellindent run` writes it (pseudo-arclength runs): the sweep's fit reads it.
+  raw["path_grid_csv"] =
+      r.method == RunMethod::kPseudoArclength
+          ? py::object(py::str(path_grid_csv(r, setup->spec.path.step, setup->spec.path.depth_max)))
+          : py::object(py::none());
   raw["warnings"] = setup->model.warnings;
   return py::make_tuple(raw, pending ? pending->value() : py::object(py::none()));
 }

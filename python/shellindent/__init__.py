@@ -21,9 +21,10 @@ from .fit import MODELS as FIT_MODELS
 from .fit import fit
 from .run import Result, column_units, run
 from .section import section
+from .sweep import SweepResult, sweep
 
 __all__ = [
     "Case", "Error", "FIT_MODELS", "InputError", "InternalError", "NumericalError", "Result",
     "case_yaml", "column_units", "default_case", "fit", "parse_case", "read_case", "run",
-    "section",
+    "section", "sweep", "SweepResult",
 ]

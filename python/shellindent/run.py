@@ -1,7 +1,7 @@
 """Running a case: the depth path as NumPy arrays keyed by path.csv's column names.
 
 run() calls the same C++ as `shellindent run` (analysis/indentation_run) without writing files;
-Result.write() writes path.csv, path.json and events.json as the CLI does. The GIL is released
+Result.write() writes path.csv, path.json, events.json and path_grid.csv as the CLI does. The GIL is released
 during the solve, so other Python threads go on while a path runs.
 
 Stopping a run: the progress function is called with each converged point (a dict of the point's
@@ -53,6 +53,8 @@ class Result:
         self.warnings = list(raw["warnings"])
         self._files = {"path.csv": raw["path_csv"], "path.json": raw["path_json"],
                        "events.json": raw["events_json"]}
+        if raw["path_grid_csv"] is not None:
+            self._files["path_grid.csv"] = raw["path_grid_csv"]
 
     def __getitem__(self, column):
         return self.path[column]
@@ -64,19 +66,15 @@ class Result:
         return (f"<shellindent.Result {self.status}, {len(self)} points, "
                 f"{self.method}>")
 
+    def files(self):
+        """The result files as `shellindent run` writes them: {file name: text}."""
+        return dict(self._files)
+
     def write(self, directory):
-        """Writes path.csv, path.json and events.json into `directory` (made if missing), each
-        atomically (a temporary file renamed into place); returns the paths written."""
-        os.makedirs(directory, exist_ok=True)
-        written = []
-        for name, text in self._files.items():
-            target = os.path.join(directory, name)
-            fd, tmp = tempfile.mkstemp(dir=directory, prefix="." + name)
-            with os.fdopen(fd, "w") as f:
-                f.write(text)
-            os.replace(tmp, target)
-            written.append(target)
-        return written
+        """Writes path.csv, path.json, events.json and (pseudo-arclength runs) path_grid.csv into
+        `directory` (made if missing), each atomically (a temporary file renamed into place), as
+        `shellindent run` writes them (docs/results.md); returns the paths written."""
+        return [write_atomically(directory, name, text) for name, text in self._files.items()]
 
 
 def run(case=None, progress=None, threads=0, checkpoint=None):
@@ -106,6 +104,18 @@ def run(case=None, progress=None, threads=0, checkpoint=None):
         stopped_by.result = result
         raise stopped_by
     return result
+
+
+def write_atomically(directory, name, text):
+    """Writes `text` to directory/name through a temporary file renamed into place (the
+    directory is made if missing); returns the path."""
+    os.makedirs(directory, exist_ok=True)
+    target = os.path.join(directory, name)
+    fd, tmp = tempfile.mkstemp(dir=directory, prefix="." + name)
+    with os.fdopen(fd, "w") as f:
+        f.write(text)
+    os.replace(tmp, target)
+    return target
 
 
 def _check_threads(threads):
