@@ -126,5 +126,5 @@ def _run_all(client, todo, total, log):
                        "status": "failed", "seconds": float("nan")}
         for name, text in outcome["files"].items():
             write_atomically(d, name, text)
-        print(f"sweep: {done}/{total} {c['label']}: {outcome['status']}, "
-              f"{outcome['seconds']:.1f} s", file=log)
+        took = f", {outcome['seconds']:.1f} s" if outcome["seconds"] == outcome["seconds"] else ""
+        print(f"sweep: {done}/{total} {c['label']}: {outcome['status']}{took}", file=log)

@@ -27,6 +27,43 @@ def read(path):
         return f.read()
 
 
+def sweep_killing_busy_workers(study, out, kills):
+    """sweep() on a fresh LocalCluster while another thread SIGKILLs the worker that runs
+    a case, `kills` times (each a different worker process); returns the result and the
+    number of kills made."""
+    client, cluster = _local_client(2)
+    killed = []
+    stop = threading.Event()  # the sweep is over
+
+    def kill_busy_workers():
+        while not stop.is_set() and len(killed) < kills:
+            # Worker address -> process id from the nannies (no call to a worker, which may be
+            # dead already); a worker with a case assigned whose process was not killed yet.
+            pids = {}
+            for nanny in list(cluster.workers.values()):
+                process = getattr(nanny.process, "process", None) if nanny.process else None
+                if process is not None and nanny.worker_address:
+                    pids[nanny.worker_address] = process.pid
+            for worker, tasks in client.processing().items():
+                pid = pids.get(worker)
+                if tasks and pid is not None and pid not in killed:
+                    os.kill(pid, 9)
+                    killed.append(pid)
+                    break
+            time.sleep(0.01)
+
+    killer = threading.Thread(target=kill_busy_workers)
+    try:
+        killer.start()
+        result = si.sweep(study, client=client, out=out)
+    finally:
+        stop.set()
+        killer.join()
+        client.close()
+        cluster.close()
+    return result, len(killed)
+
+
 class DaskSweep(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -57,30 +94,26 @@ class DaskSweep(unittest.TestCase):
 
     def test_a_worker_killed_mid_run_loses_only_its_case(self):
         out = fresh("sweep_dask_killed")
-        client, cluster = _local_client(2)
-        try:
-            killed = []
-
-            def kill_a_busy_worker():
-                deadline = time.monotonic() + 60
-                while time.monotonic() < deadline and not killed:
-                    busy = [w for w, tasks in client.processing().items() if tasks]
-                    if busy:
-                        pid = client.run(os.getpid, workers=[busy[0]])[busy[0]]
-                        os.kill(pid, 9)
-                        killed.append(pid)
-                    time.sleep(0.01)
-
-            killer = threading.Thread(target=kill_a_busy_worker)
-            killer.start()
-            result = si.sweep(STUDY, client=client, out=out)
-            killer.join()
-        finally:
-            client.close()
-            cluster.close()
-        self.assertTrue(killed, "no worker was busy to kill")
+        result, killed = sweep_killing_busy_workers(STUDY, out, kills=1)
+        self.assertEqual(killed, 1, "no worker was busy to kill")
         self.assertEqual(result.failed, 0)
         self.assertEqual(read(os.path.join(out, "sweep.csv")), self.cli_csv)
+
+
+class DaskSweepWorkerDiesTwice(unittest.TestCase):
+    def test_the_case_is_retried_once_then_reported_failed(self):
+        # One case on a 2-process LocalCluster (allowed-failures 1): its worker is killed, the
+        # scheduler resubmits it, its new worker is killed too: the case is failed, the sweep
+        # still writes its table, with the reason.
+        out = fresh("sweep_dask_killed_twice")
+        result, killed = sweep_killing_busy_workers(
+            os.path.join(HERE, "one_slow_case.yaml"), out, kills=2)
+        self.assertEqual(killed, 2)
+        self.assertEqual(result.failed, 1)
+        row = result.rows[0]
+        self.assertEqual(row["status"], "failed")
+        self.assertIn("KilledWorker", row["reason"])
+        self.assertIn("KilledWorker", read(os.path.join(out, "sweep.csv")))
 
 
 if __name__ == "__main__":
