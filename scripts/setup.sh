@@ -10,14 +10,17 @@ shift || true
 
 # Debian packages of ../shared/docs/toolchain.md. libopenblas0-pthread switches the
 # libblas.so.3 alternative: CHOLMOD and UMFPACK measured about 1.6x faster than reference BLAS.
-# python3-yaml: studies/sandwich.py reads its case file. clang + libclang-rt-14-dev: libFuzzer
-# for the fuzz targets (tests/fuzz/, scripts/fuzz.sh).
+# python3-yaml: studies/sandwich.py reads its case file. pybind11-dev + python3-dev: the Python
+# module (python/, docs/python.md), built and tested with python3-numpy; python3-distributed:
+# its sweeps on a Dask cluster (shellindent.sweep, tested on a LocalCluster). clang +
+# libclang-rt-14-dev: libFuzzer for the fuzz targets (tests/fuzz/, scripts/fuzz.sh).
 PACKAGES=(
   cmake ninja-build g++ pkg-config clang-format
   libsundials-dev libeigen3-dev libsuitesparse-dev libopenblas0-pthread
   libnlopt-cxx-dev libspectra-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libbenchmark-dev
-  python3 python3-matplotlib python3-numpy python3-yaml
+  python3 python3-matplotlib python3-numpy python3-yaml python3-dev pybind11-dev
+  python3-distributed
   clang libclang-rt-14-dev
 )
 

@@ -19,6 +19,7 @@
 #include "io/case_file.hpp"
 #include "io/case_key_location.hpp"
 #include "io/damage_fields.hpp"
+#include "io/default_case.hpp"
 #include "io/output_directory.hpp"
 #include "io/output_lock.hpp"
 #include "io/path_results.hpp"
@@ -238,25 +239,11 @@ std::vector<std::string> write_path_files(const std::filesystem::path& dir,
 
 }  // namespace
 
-std::string default_case_yaml() {
-  return "# Built-in default of `shellindent run`: the source paper's cap (docs/case-file.md).\n"
-         "material: paper-carbon-epoxy\n"
-         "laminate: {layup: \"[0/0]2S\", ply_thickness: 0.475 mm, reference: mid}\n"
-         "shell: {type: spherical_cap, base_radius: 25 mm, radius: 80.9 mm, edge: clamped}\n"
-         "mesh: {element: mitc4, size_apex: 0.5 mm, size_edge: 2 mm, refine_radius: 13 mm,\n"
-         "       symmetry: quarter}\n"
-         "kinematics: nonlinear\n"
-         "indenter: {shape: sphere, radius: 12.7 mm}\n"
-         "contact: {surface: outer, solver: kinsol}\n"
-         "path: {method: pseudo_arclength, depth_max: 10 mm, step: 0.1 mm}\n"
-         "output: {dir: results/paper_cap/, vtu_every: 10}\n";
-}
-
 int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream& err) {
   check_thread_count(o.threads);
   const std::string text = o.case_file.empty() ? default_case_yaml() : case_text(o.case_file);
-  const CaseFile cf = o.case_file.empty() ? parse_case_file(text, "built-in default case")
-                                          : read_case_file(o.case_file);
+  const CaseFile cf =
+      o.case_file.empty() ? parse_case_file(text, kDefaultCaseLabel) : read_case_file(o.case_file);
   std::optional<IndentationSetup> built;
   try {
     built.emplace(cf, o.threads);

@@ -1,6 +1,6 @@
 // `shellindent run [CASE.yaml] [--out DIR] [--threads N]`: the indentation depth path of a case
 // (analysis/indentation_run.hpp). Without a case file it runs the built-in default, the source
-// paper's cap with [0/0]2S (default_case_yaml()). Prints a progress line per converged point to
+// paper's cap with [0/0]2S (io/default_case.hpp). Prints a progress line per converged point to
 // `err` and the force-depth table to `out`; writes DIR/path.csv, DIR/path.json, DIR/events.json
 // and VTU files of chosen points (output.vtu_every) with a ParaView collection DIR/path.pvd, each
 // file atomically. Continuation runs also keep DIR/checkpoint.json (every 10 points) and
@@ -21,10 +21,5 @@ struct RunCommandOptions {
 };
 
 int run_run_command(const RunCommandOptions& options, std::ostream& out, std::ostream& err);
-
-// The built-in default case: the paper's clamped carbon/epoxy cap, [0/0]2S (specially
-// orthotropic, so a quarter model is exact), 12.7 mm sphere on the outer face, nonlinear, 0 to
-// 10 mm by pseudo-arclength with 0.1 mm steps.
-std::string default_case_yaml();
 
 }  // namespace si

@@ -1,4 +1,4 @@
-#include "app/damage_summary.hpp"
+#include "io/damage_summary.hpp"
 
 #include <algorithm>
 
