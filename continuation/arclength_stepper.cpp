@@ -4,6 +4,13 @@
 #include <limits>
 
 namespace si::cont {
+namespace {
+
+// |w dp/ds| of the unit tangent below which the branch is near a fold of p: no landing there (the
+// Jacobian at fixed p is nearly singular), Keller's step instead.
+constexpr double kFoldSlope = 1e-3;
+
+}  // namespace
 
 bool ArclengthSystem::residual(const Vector& u, Vector& r) {
   const Eigen::Index n = a_.x.size();
@@ -41,11 +48,56 @@ double ArclengthStepper::distance_to_target(const State&) const {
 }
 
 StepResult ArclengthStepper::step(const State& from, double ds) {
+  Vector d_x;
+  double d_p = 0.0;
+  direction(from, d_x, d_p);
+  double target = 0.0;
+  if (landing_target(from.current.point.p, ds, d_p, target)) {
+    StepResult landed = land(from, d_x, d_p, target);
+    if (landed.converged) return landed;
+  }
+  // No target within reach, or no solution at it near the predictor (e.g. a fold just before
+  // it): Keller's step; the tracer cuts it at a bound it crosses (Tracer::clip_to_target).
+  return arclength_step(from, d_x, d_p, ds);
+}
+
+bool ArclengthStepper::landing_target(double p_a, double ds, double d_p, double& target) const {
+  if (!(bordered_.weight() * std::abs(d_p) >= kFoldSlope)) return false;
+  const double reach = p_a + ds * d_p;
+  const double ahead = d_p > 0.0 ? 1.0 : -1.0;
+  target = d_p > 0.0 ? settings_.p_max : settings_.p_min;
+  for (double v : settings_.parameter_values)
+    if (ahead * (v - p_a) > 0.0 && ahead * (v - target) < 0.0) target = v;
+  return std::isfinite(target) && ahead * (reach - target) >= 0.0;
+}
+
+StepResult ArclengthStepper::land(const State& from, const Vector& d_x, double d_p, double target) {
+  const Point& a = from.current.point;
+  const double ds = (target - a.p) / d_p;  // the predictor's arclength to p = target
+  StepResult out;
+  out.direction_x = d_x;
+  out.direction_p = d_p;
+  out.x = a.x + ds * d_x;
+  out.p = target;
+  const NewtonResult r = solve_at(problem_, out.x, target, settings_.newton);
+  out.iterations = r.iterations;
+  out.reason = r.reason;
+  out.sigma_end = sigma_of(from, out, out.x, out.p);
+  // The corrector at fixed p may leave the hyperplane's neighbourhood: accept only a point ahead
+  // along d and not beyond twice the predictor's arclength (else a jump along the branch).
+  out.converged = r.converged && out.sigma_end > 0.0 && out.sigma_end <= 2.0 * ds;
+  out.landed = out.converged;
+  return out;
+}
+
+StepResult ArclengthStepper::arclength_step(const State& from, const Vector& d_x, double d_p,
+                                            double ds) {
   const Point& a = from.current.point;
   StepResult out;
-  direction(from, out.direction_x, out.direction_p);
+  out.direction_x = d_x;
+  out.direction_p = d_p;
   out.sigma_end = ds;
-  Vector u = stack(a.x + ds * out.direction_x, a.p + ds * out.direction_p);
+  Vector u = stack(a.x + ds * d_x, a.p + ds * d_p);
   ArclengthSystem system(problem_, bordered_, a, out.direction_x, out.direction_p, ds);
   const NewtonResult r = newton_solve(system, u, settings_.newton);
   out.x = u.head(a.x.size());

@@ -100,9 +100,6 @@ void Settings::validate() const {
             c + ".parameter_values[" + std::to_string(i) + "] = " + str(parameter_values[i]) +
                 " must be greater than the previous value (strictly increasing)");
   }
-  require(parameter_values.empty() || method == Method::kNatural,
-          c + ".parameter_values is set but method = " + method_name(method) +
-              " (only natural hits explicit parameter values)");
   require_positive(c, "event_tolerance", event_tolerance);
   require_field(event_max_iterations >= 1, c, "event_max_iterations", event_max_iterations,
                 "must be >= 1");

@@ -77,7 +77,8 @@ struct Settings {
   // to another branch).
   double max_turn_deg = 60.0;
 
-  // Parameter bounds: the run stops at the bound, located exactly (the last point has p = bound).
+  // Parameter bounds: the run stops at the bound, landed on exactly (the last point has p = bound):
+  // the step that would cross it is shortened to reach it (docs/theory/continuation.md §3).
   double p_min = -std::numeric_limits<double>::infinity();
   double p_max = std::numeric_limits<double>::infinity();
   int max_steps = 1000;
@@ -86,8 +87,10 @@ struct Settings {
 
   NewtonSettings newton;
 
-  // natural only: strictly increasing parameter values hit exactly (substeps allowed); the run
-  // completes at the last one. Must lie in the direction of travel from p0.
+  // Strictly increasing parameter values hit exactly: a step that would pass one is shortened to
+  // land on it. natural: they must lie in the direction of travel from p0 and the run completes
+  // at the last one. pseudo_arclength: each is landed on whenever the branch crosses it (away
+  // from a fold of p), and the run goes on to a bound.
   std::vector<double> parameter_values;
 
   // Events (events.hpp), located to event_tolerance in arclength (|dp| for natural).

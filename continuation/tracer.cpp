@@ -134,8 +134,8 @@ class Tracer {
         state_.step = std::max(0.5 * ds, settings_.step_min);
         continue;
       }
-      const bool at_bound = clip_to_bound(step, b);
-      accept(step, b, nominal, ds < nominal);
+      const bool at_bound = clip_to_target(step, b);
+      accept(step, b, nominal, ds < nominal || step.landed);
       if (!after_accept()) return;
       if (at_bound) {
         finish(Status::kReachedBound, "p reached the bound " + fmt(b.point.p));
@@ -179,27 +179,44 @@ class Tracer {
     };
   }
 
-  // If the step went past a parameter bound, replace b by the point on the bound: located on the
-  // segment by regula falsi on p - bound, then solved at p = bound exactly. True if b is on it.
-  bool clip_to_bound(StepResult& step, TangentPoint& b) {
+  // The bound or Settings::parameter_values entry that the step from p_a to p_b went past (the
+  // first one from p_a), if any. A step that lands on one (StepResult::landed) has p_b on it.
+  bool crossed_target(double p_a, double p_b, double& target) const {
+    target = p_b > settings_.p_max   ? settings_.p_max
+             : p_b < settings_.p_min ? settings_.p_min
+                                     : std::nan("");
+    for (double v : settings_.parameter_values)
+      if ((v - p_a) * (v - p_b) < 0.0 &&
+          (std::isnan(target) || std::abs(v - p_a) < std::abs(target - p_a)))
+        target = v;
+    return !std::isnan(target);
+  }
+
+  // If the step went past a target (a bound, or a parameter value the landing missed because the
+  // corrector carried p beyond the predictor's), replace b by the point on it: located on the
+  // segment by regula falsi on p - target, then solved at p = target exactly. This costs several
+  // solves; the steppers land on their targets instead (Stepper::step), so it is the exception.
+  // True if b is on a bound.
+  bool clip_to_target(StepResult& step, TangentPoint& b) {
     const double p = b.point.p;
     if (p == settings_.p_min || p == settings_.p_max) return true;
-    if (p > settings_.p_min && p < settings_.p_max) return false;
-    const double bound = p > settings_.p_max ? settings_.p_max : settings_.p_min;
+    double target = 0.0;
+    if (!crossed_target(state_.current.point.p, p, target)) return false;
     const TangentPoint& a = state_.current;
     TangentPoint at;
     bool located = false;
-    locate_root([bound](const TangentPoint& tp) { return tp.point.p - bound; }, {0.0, a},
+    locate_root([target](const TangentPoint& tp) { return tp.point.p - target; }, {0.0, a},
                 {step.sigma_end, b}, segment(step), settings_, at, located);
     Vector x = at.point.x;
-    if (solve_at(problem_, x, bound, settings_.newton).converged &&
-        analyse(x, bound, a.tangent_x, a.point.tangent_p, b)) {
+    if (solve_at(problem_, x, target, settings_.newton).converged &&
+        analyse(x, target, a.tangent_x, a.point.tangent_p, b)) {
       step.sigma_end = stepper_.sigma_of(state_, step, b.point.x, b.point.p);
-      return true;
+    } else {
+      b = at;  // p within event_tolerance of the target: the best available
+      step.sigma_end = stepper_.sigma_of(state_, step, b.point.x, b.point.p);
     }
-    b = at;  // p within event_tolerance of the bound: the best available
-    step.sigma_end = stepper_.sigma_of(state_, step, b.point.x, b.point.p);
-    return true;
+    step.landed = true;
+    return target == settings_.p_min || target == settings_.p_max;
   }
 
   void accept(const StepResult& step, TangentPoint& b, double nominal, bool clipped) {

@@ -23,6 +23,9 @@ struct StepResult {
   Vector direction_x;
   double direction_p = 0.0;
   double sigma_end = 0.0;
+  // The step was shortened to land on a bound or a Settings::parameter_values entry (its p is
+  // that value exactly): the next step grows from the nominal size, not from this one.
+  bool landed = false;
 };
 
 class Stepper {

@@ -291,7 +291,9 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   // warm state (the path's last bits, at the 1e-10 tolerance).
   c.detect_signature_changes = true;
   c.locate_signature_changes = false;  // contact grows node by node: report, do not bisect
-  if (c.method == cont::Method::kNatural) c.parameter_values = depth_grid(path);
+  // natural stops at every depth of the grid; pseudo-arclength lands on the requested depths
+  // (path.depths) on its way to depth_max, its grid being interpolated (path_grid.csv).
+  c.parameter_values = c.method == cont::Method::kNatural ? depth_grid(path) : path.depths;
   // The lowest mode: a change of the count by more than one is located by bisection on it.
   c.stability_modes = path.stability ? 1 : 0;
   return c;

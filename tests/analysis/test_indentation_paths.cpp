@@ -254,3 +254,58 @@ TEST(IndentationPaths, DepthGridOfAnArclengthRunMatchesSolvesAtTheGridDepths) {
 
 }  // namespace
 }  // namespace si
+
+namespace si {
+namespace {
+
+// Landing (continuation/arclength_stepper.hpp): the pseudo-arclength run's last point is on
+// depth_max exactly and the explicitly requested depths are points of the branch, so their rows
+// of path_grid.csv are converged points, not interpolated; at those depths the run agrees with
+// natural continuation to the corrector tolerance.
+TEST(IndentationPaths, ArclengthLandsOnDepthMaxAndRequestedDepths) {
+  CaseFile c =
+      testing::coarse_cap_path_case("[0/0]2S", PathMethod::kPseudoArclength, 1.8, 0.1, 0.5);
+  c.path.depths = {0.45, 1.3};
+  IndentationSetup arclength(c, 1);
+  const PathResult a = run_indentation_path(arclength);
+  ASSERT_TRUE(a.completed) << a.reason;
+  EXPECT_EQ(a.points.back().state.depth, 1.8);
+  for (double h : c.path.depths)
+    EXPECT_TRUE(std::any_of(a.points.begin(), a.points.end(), [h](const PathPoint& p) {
+      return p.state.depth == h;
+    })) << h;
+
+  const std::string file = ::testing::TempDir() + "shellindent_landing_grid.csv";
+  std::ofstream(file) << path_grid_csv(a, c.path.step, c.path.depth_max);
+  const CsvTable grid = read_csv_table(file);
+  std::remove(file.c_str());
+  const std::vector<double> depth = grid.numeric_column("depth_mm");
+  const std::vector<double> interpolated = grid.numeric_column("interpolated");
+  ASSERT_FALSE(depth.empty());
+  EXPECT_NEAR(depth.back(), 1.8, 1e-12);
+  EXPECT_EQ(interpolated.back(), 0.0);  // the last row is the last point
+  for (std::size_t k = 0; k < depth.size(); ++k)
+    if (std::abs(depth[k] - 1.3) < 1e-9) {
+      EXPECT_EQ(interpolated[k], 0.0);
+    }
+
+  CaseFile nc = c;
+  nc.path.method = PathMethod::kNatural;
+  nc.path.depths = {0.45, 1.3, 1.8};
+  IndentationSetup natural(nc, 1);
+  const PathResult b = run_indentation_path(natural);
+  ASSERT_TRUE(b.completed) << b.reason;
+  for (double h : nc.path.depths) {
+    const auto at = [h](const PathResult& r) {
+      return std::find_if(r.points.begin(), r.points.end(),
+                          [h](const PathPoint& p) { return p.state.depth == h; });
+    };
+    ASSERT_NE(at(a), a.points.end());
+    ASSERT_NE(at(b), b.points.end());
+    const double fa = at(a)->state.force, fb = at(b)->state.force;
+    EXPECT_NEAR(fa, fb, 1e-8 * (1 + fb)) << h;
+  }
+}
+
+}  // namespace
+}  // namespace si

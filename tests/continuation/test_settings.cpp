@@ -1,6 +1,7 @@
 // Settings validation: bad settings are rejected with a message naming the field and value.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -80,14 +81,21 @@ TEST(ContSettings, RejectsBadNewtonSettings) {
   EXPECT_NO_THROW(newton.validate());
 }
 
-TEST(ContSettings, RejectsParameterValuesNotIncreasingOrNotNatural) {
+TEST(ContSettings, RejectsParameterValuesNotIncreasingOrNotFinite) {
   expect_rejected(
       [](Settings& s) {
         s.method = Method::kNatural;
         s.parameter_values = {0.1, 0.3, 0.2};
       },
       "continuation.parameter_values[2] = 0.20000000000000001 must be greater");
-  expect_rejected([](Settings& s) { s.parameter_values = {0.1}; }, "only natural");
+  expect_rejected(
+      [](Settings& s) {
+        s.parameter_values = {0.1, INFINITY};
+      },
+      "continuation.parameter_values[1] = inf must be finite");
+  Settings arclength;  // pseudo_arclength lands on them (test_landing.cpp)
+  arclength.parameter_values = {0.1};
+  EXPECT_NO_THROW(arclength.validate());
 }
 
 TEST(ContSettings, RejectsUnknownMethodAndPredictorNames) {
