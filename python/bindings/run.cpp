@@ -19,28 +19,34 @@
 namespace si::py {
 namespace {
 
+// The columns a run of this case writes (path.csv's): those of every run, the failure indices
+// it monitors and the stability columns if it asks for them (analysis/path_columns.hpp).
+std::vector<PathColumn> case_columns(const IndentationCase& spec) {
+  return run_columns(spec.damage ? spec.damage->criteria : std::vector<Criterion>{},
+                     spec.path.stability);
+}
+
 // A point's values by column name, for the progress function.
-py::dict point_dict(const PathPoint& p) {
+py::dict point_dict(const PathPoint& p, const std::vector<PathColumn>& columns) {
   py::dict d;
-  const std::vector<double> values = path_point_values(p);
-  const std::vector<ColumnSpec>& columns = path_columns();
+  const std::vector<double> values = path_point_values(p, columns);
   d["index"] = p.index;
-  for (std::size_t c = 0; c < columns.size(); ++c) d[columns[c].name] = values[c];
+  for (std::size_t c = 0; c < columns.size(); ++c) d[column_name(columns[c])] = values[c];
   return d;
 }
 
 // The path's columns as NumPy arrays, one value per converged point.
 py::dict path_arrays(const PathResult& r) {
-  const std::vector<ColumnSpec>& columns = path_columns();
+  const std::vector<PathColumn> columns = result_columns(r);
   std::vector<py::array_t<double>> arrays;
   for (std::size_t c = 0; c < columns.size(); ++c)
     arrays.emplace_back(static_cast<py::ssize_t>(r.points.size()));
   for (std::size_t i = 0; i < r.points.size(); ++i) {
-    const std::vector<double> values = path_point_values(r.points[i]);
+    const std::vector<double> values = path_point_values(r.points[i], columns);
     for (std::size_t c = 0; c < columns.size(); ++c) arrays[c].mutable_at(i) = values[c];
   }
   py::dict d;
-  for (std::size_t c = 0; c < columns.size(); ++c) d[columns[c].name] = arrays[c];
+  for (std::size_t c = 0; c < columns.size(); ++c) d[column_name(columns[c])] = arrays[c];
   return d;
 }
 
@@ -62,12 +68,13 @@ py::tuple run_case(const CaseHandle& c, const py::object& progress, int threads,
     }
   }
   std::optional<py::error_already_set> pending;  // what stopped the run from Python
+  const std::vector<PathColumn> columns = case_columns(setup->spec);
   const PathCallback on_point = [&](const PathPoint& p, const cont::Vector&) {
     py::gil_scoped_acquire gil;
     try {
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
       if (progress.is_none()) return true;
-      const py::object answer = progress(point_dict(p));
+      const py::object answer = progress(point_dict(p, columns));
       return answer.ptr() != Py_False;  // an explicit False stops the run
     } catch (py::error_already_set& e) {
       pending.emplace(std::move(e));
@@ -113,7 +120,9 @@ void bind_run(py::module_& m) {
   m.def("run_case", &run_case, py::arg("case"), py::arg("progress"), py::arg("threads") = 0,
         py::arg("checkpoint") = "",
         "The path of a case: (raw result dict, exception that stopped it or None)");
-  m.def("column_units", &column_units, "path.csv's columns and their units, in order");
+  m.def("column_units", &column_units,
+        "every column of the table (analysis/path_columns) and its unit, in path.csv's order; "
+        "a run writes the leading ones and the optional ones it asks for");
 }
 
 }  // namespace si::py
