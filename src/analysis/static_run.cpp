@@ -19,10 +19,6 @@ std::string number_text(double value) {
   return os.str();
 }
 
-void bad(const std::string& key, const std::string& value, const std::string& why) {
-  throw_input(why, Where{"", "static." + key, value, 0});
-}
-
 // The continuation settings of a static run (static_run.hpp).
 cont::Settings continuation_settings(const StaticSettings& s, double force_scale) {
   cont::Settings c;
@@ -95,27 +91,6 @@ std::string failure_text(const cont::Branch& branch, const LoadProblem& problem,
 }
 
 }  // namespace
-
-void StaticSettings::validate() const {
-  if (steps < 1) bad("steps", std::to_string(steps), "need at least 1 load step");
-  if (max_iterations < 1)
-    bad("max_iterations", std::to_string(max_iterations), "need at least 1 Newton iteration");
-  if (!(tolerance > 0 && tolerance < 1))
-    bad("tolerance", number_text(tolerance), "tolerance must be in (0, 1)");
-  if (max_halvings < 0 || max_halvings > 30)
-    bad("max_halvings", std::to_string(max_halvings), "max_halvings must be in 0..30");
-  if (linear_solver != LinearSolverKind::kCholmod && linear_solver != LinearSolverKind::kUmfpack)
-    bad("linear_solver", make_linear_solver(linear_solver)->name(),
-        "not a solver for the static run (expected cholmod or umfpack)");
-  if (method != PathMethod::kPseudoArclength) return;
-  if (!(step_min > 0 && step_min <= step && step <= step_max))
-    bad("step", number_text(step), "need 0 < step_min <= step <= step_max");
-  if (!(parameter_weight > 0))
-    bad("parameter_weight", number_text(parameter_weight), "must be positive");
-  if (!(load_factor_max > 0))
-    bad("load_factor_max", number_text(load_factor_max), "must be positive");
-  if (max_steps < 1) bad("max_steps", std::to_string(max_steps), "need at least 1 step");
-}
 
 StaticResult run_static(const Mesh& mesh, const DofMap& dofs, const ShellElement& element,
                         const ShellLaw& law, Kinematics kinematics, const Loads& loads,

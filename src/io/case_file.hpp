@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "analysis/indentation_case.hpp"
-#include "analysis/static_run.hpp"
+#include "analysis/static_spec.hpp"
 #include "material/material.hpp"
 
 namespace si {
