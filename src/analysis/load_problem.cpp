@@ -1,6 +1,8 @@
 #include "analysis/load_problem.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 
@@ -30,7 +32,7 @@ LoadProblem::LoadProblem(const Mesh& mesh, DofMap dofs, const ShellElement& elem
   if (!symmetric && loads_.has_follower())
     load_ += dofs_.restrict_to_free(follower_load_vector(mesh, loads_, reference_state(mesh)));
   double scale = load_.size() > 0 ? load_.cwiseAbs().maxCoeff() : 0.0;
-  if (has_prescribed_values()) scale = std::max(scale, linear_reaction_scale());
+  scale = std::max(scale, linear_scales());
   force_scale_ = scale > 0 ? scale : 1.0;
   for (const DisplacementMonitor& m : options_.displacements) {
     const auto it = mesh.node_sets.find(m.node_set);
@@ -51,8 +53,10 @@ LoadProblem::~LoadProblem() = default;
 // f_int(x = 0, u_p) would overstate them grossly (the whole jump in the first row of elements).
 // The linear solution gives their scale: K_ff x = f_ext - K_fp u_p, then the largest internal
 // force K [x; u_p] over every dof. K_fp u_p and K [x; u_p] are directional differences at the
-// reference, f_int(h x, h u_p) / h, first-order accurate in h (a scale needs no more).
-double LoadProblem::linear_reaction_scale() {
+// reference, f_int(h x, h u_p) / h, first-order accurate in h (a scale needs no more). The same
+// solution sets the roundoff floor of the residual: eps max_i sum_j |K_ij x_j|, the size of the
+// terms that cancel in a free row (a stiff membrane under a small load: far above eps |f_ext|).
+double LoadProblem::linear_scales() {
   constexpr double h = 1e-7;
   const cont::Vector zero = initial_point();
   jacobian_ = shell_.at(zero, 0.0).tangent;
@@ -63,8 +67,21 @@ double LoadProblem::linear_reaction_scale() {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return 0.0;  // the run reports the singular matrix
   }
-  const cont::Vector k_fp_u = dofs_.restrict_to_free(shell_.force_at(zero, h).internal_force) / h;
+  const bool prescribed = has_prescribed_values();
+  const cont::Vector k_fp_u =
+      prescribed ? cont::Vector(dofs_.restrict_to_free(shell_.force_at(zero, h).internal_force) / h)
+                 : cont::Vector::Zero(size());
   const cont::Vector x = solver->solve(load_ - k_fp_u);
+  if (!x.allFinite()) return 0.0;
+  Eigen::VectorXd terms = Eigen::VectorXd::Zero(x.size());
+  for (int c = 0; c < jacobian_.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(jacobian_, c); it; ++it)
+      if (it.row() < terms.size() && it.col() < x.size())
+        terms[it.row()] += std::abs(it.value() * x[it.col()]);
+  if (terms.size() > 0)
+    roundoff_force_ = std::numeric_limits<double>::epsilon() *
+                      std::max(terms.maxCoeff(), k_fp_u.cwiseAbs().maxCoeff());
+  if (!prescribed) return 0.0;
   const Eigen::VectorXd f = shell_.force_at(h * x, h).internal_force / h;
   return f.size() > 0 && f.allFinite() ? f.cwiseAbs().maxCoeff() : 0.0;
 }

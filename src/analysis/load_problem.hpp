@@ -95,6 +95,8 @@ class LoadProblem : public cont::Problem {
   // factor 1: the largest free-dof load and, with non-zero prescribed displacements, the largest
   // internal force (reaction) of the linear solution (N); 1 if both vanish.
   double force_scale() const { return force_scale_; }
+  // The roundoff floor of the residual at load factor 1 (linear_scales() in the .cpp), N.
+  double roundoff_force() const { return roundoff_force_; }
   // The solver of the last factorization.
   LinearSolverKind linear_solver() const { return solver_->kind(); }
   // The last numerical error met by residual() or factorize() (an element's, a singular
@@ -104,7 +106,7 @@ class LoadProblem : public cont::Problem {
  private:
   bool nonlinear() const { return options_.kinematics == Kinematics::kNonlinear; }
   bool has_prescribed_values() const;
-  double linear_reaction_scale();
+  double linear_scales();
   // lambda f_ext at the states of the last assembly, every dof.
   Eigen::VectorXd external_force(double lambda) const;
   const Assembly& assembly_at(const cont::Vector& x, double lambda, bool tangent);
@@ -120,6 +122,7 @@ class LoadProblem : public cont::Problem {
   Eigen::VectorXd fixed_load_;  // every dof, load factor 1 (linear: with the followers)
   Eigen::VectorXd load_;        // free dofs
   double force_scale_ = 1;
+  double roundoff_force_ = 0;
   std::vector<std::vector<int>> monitor_nodes_;  // per displacement monitor
   SparseMatrix jacobian_;
   std::unique_ptr<LinearSolver> solver_;
