@@ -95,7 +95,8 @@ class LoadProblem : public cont::Problem {
   // factor 1: the largest free-dof load and, with non-zero prescribed displacements, the largest
   // internal force (reaction) of the linear solution (N); 1 if both vanish.
   double force_scale() const { return force_scale_; }
-  // The roundoff floor of the residual at load factor 1 (linear_scales() in the .cpp), N.
+  // The roundoff floor of the residual at load factor 1 (linear_scales() in the .cpp; linear
+  // kinematics: at least the residual of the linear solution, linear_residual()), N.
   double roundoff_force() const { return roundoff_force_; }
   // The solver of the last factorization.
   LinearSolverKind linear_solver() const { return solver_->kind(); }
@@ -107,6 +108,7 @@ class LoadProblem : public cont::Problem {
   bool nonlinear() const { return options_.kinematics == Kinematics::kNonlinear; }
   bool has_prescribed_values() const;
   double linear_scales();
+  double linear_residual(LinearSolver& solver);
   // lambda f_ext at the states of the last assembly, every dof.
   Eigen::VectorXd external_force(double lambda) const;
   const Assembly& assembly_at(const cont::Vector& x, double lambda, bool tangent);
