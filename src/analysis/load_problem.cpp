@@ -166,7 +166,11 @@ bool LoadProblem::factorize(const cont::Vector& x, double lambda) {
       return true;
     }
     const Assembly& a = shell_.at(x, lambda);
-    const cont::Vector r = dofs_.restrict_to_free(a.internal_force - external_force(lambda));
+    // The chart's drilling term differentiates rotation rows that are components of a vector on
+    // the current axes: the internal moments. The loads' rotation rows are constant generalised
+    // forces (NodalMoment, loads.hpp) with zero derivative; including them (r = f_int - f_ext)
+    // was wrong by drill * M per loaded node, which stalled Newton on the rolled-up strip.
+    const cont::Vector r = dofs_.restrict_to_free(a.internal_force);
     jacobian_ = a.tangent;
     if (loads_.has_follower())
       for_each_follower_stiffness(mesh_, loads_, shell_.states(), [&](int e, const auto& block) {
@@ -208,6 +212,15 @@ double LoadProblem::inner(const cont::Vector& a, const cont::Vector& b) const {
   return a.dot(b) / static_cast<double>(a.size());
 }
 
+// pi/2: T(x) is well conditioned there (it loses rank only at pi), and a node may turn by
+// almost pi/2 more within the next step before the chart becomes singular.
+bool LoadProblem::adapt(cont::Vector& x, double /*lambda*/) {
+  if (!nonlinear() || chart_.rebase(x, M_PI / 2) == 0) return false;
+  shell_.forget();
+  ++rebasings_;
+  return true;
+}
+
 std::vector<std::string> LoadProblem::monitor_names() const {
   std::vector<std::string> names{"load_factor"};
   for (const DisplacementMonitor& m : options_.displacements) names.push_back(m.name);
@@ -232,6 +245,24 @@ cont::Vector LoadProblem::monitors(const cont::Vector& x, double lambda) {
 LoadPointState LoadProblem::point_state(const cont::Vector& x, double lambda) {
   const Assembly& a = shell_.force_at(x, lambda);
   return {shell_.states(), a.internal_force, external_force(lambda), a.energy};
+}
+
+LoadPointState LoadProblem::point_state_with_base(const std::vector<NodeState>& base,
+                                                  const cont::Vector& x, double lambda) {
+  std::vector<NodeState> current = chart_.base();
+  chart_.set_base(base);
+  shell_.forget();
+  LoadPointState s;
+  try {
+    s = point_state(x, lambda);
+  } catch (...) {
+    chart_.set_base(std::move(current));
+    shell_.forget();
+    throw;
+  }
+  chart_.set_base(std::move(current));
+  shell_.forget();
+  return s;
 }
 
 }  // namespace si

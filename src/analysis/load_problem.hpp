@@ -11,6 +11,13 @@
 // prescribed value is non-zero (else the continuation's central difference of F, second order).
 // The pseudo-arclength method follows the path through limit points of the load (snap-through)
 // and of the displacement (snap-back), which load control cannot (Riks 1979; Crisfield 1981).
+// The chart is singular where a node has turned by pi from its base (shell_chart.hpp), so a node
+// that turns further (a strip rolled into a circle) is re-based on the way: adapt() re-bases
+// every node turned by more than pi/2 at an accepted point; the continuation then re-solves
+// there (a converged state: no iteration) and recomputes the tangent in the new chart, dropping
+// the secant history (continuation/problem.hpp). x then holds the rotations from the new base;
+// a point located before the re-basing (an event) is read with the base of its time
+// (point_state_with_base()).
 //
 // Linear kinematics: F = K x + lambda (K_fp u_p - f_ext) with K the reference stiffness,
 // factored once (CHOLMOD, or UMFPACK if K is not positive definite); the node states are those
@@ -79,6 +86,8 @@ class LoadProblem : public cont::Problem {
   // RMS nodal displacement increment; the load factor enters with Settings::parameter_weight (mm
   // per unit load factor).
   double inner(const cont::Vector& a, const cont::Vector& b) const override;
+  // Nonlinear kinematics: re-bases the chart at x (see above); true if a node was re-based.
+  bool adapt(cont::Vector& x, double lambda) override;
   // "load_factor", then the displacement monitors in options order.
   std::vector<std::string> monitor_names() const override;
   cont::Vector monitors(const cont::Vector& x, double lambda) override;
@@ -88,6 +97,12 @@ class LoadProblem : public cont::Problem {
   std::vector<NodeState> node_states(const cont::Vector& x, double lambda = 1.0) const;
   // Forces, energy and states at a point (one force assembly unless cached).
   LoadPointState point_state(const cont::Vector& x, double lambda);
+  // The same for x in the chart with the given base frames (a chart_base() of an earlier time).
+  LoadPointState point_state_with_base(const std::vector<NodeState>& base, const cont::Vector& x,
+                                       double lambda);
+  // The chart's base frames (ShellChart::base) and the number of adapt() calls that re-based it.
+  const std::vector<NodeState>& chart_base() const { return chart_.base(); }
+  int rebasings() const { return rebasings_; }
   const DofMap& dofs() const { return dofs_; }
   // f_ext on the free dofs at load factor 1 and the reference positions.
   const Eigen::VectorXd& load_vector() const { return load_; }
@@ -129,6 +144,7 @@ class LoadProblem : public cont::Problem {
   SparseMatrix jacobian_;
   std::unique_ptr<LinearSolver> solver_;
   bool factorized_ = false;  // linear kinematics: K is factored once
+  int rebasings_ = 0;
   std::string last_error_;
 };
 

@@ -52,10 +52,9 @@ cont::Settings continuation_settings(const StaticSettings& s, double force_scale
 
 // The step result of a point: reactions r = f_int - f_ext at the prescribed dofs
 // (assembler.hpp), their sum and that of the applied forces, the recorded displacements.
-StepResult step_result(LoadProblem& problem, const std::vector<int>& record_nodes,
-                       const cont::Vector& x, double lambda, int iterations,
+StepResult step_result(const LoadProblem& problem, const std::vector<int>& record_nodes,
+                       LoadPointState s, double lambda, int iterations,
                        std::vector<NodeState>* states) {
-  LoadPointState s = problem.point_state(x, lambda);
   const DofMap& dofs = problem.dofs();
   StepResult result;
   result.load_factor = lambda;
@@ -116,9 +115,32 @@ StaticResult run_static(const Mesh& mesh, const DofMap& dofs, const ShellElement
 
   StaticResult out;
   out.state = reference_state(mesh);
+  // The events of a step are located before Problem::adapt may re-base the chart at its end
+  // (load_problem.hpp): they are read with the base of the point before, the chart at the last
+  // callback (copied only when it changes).
+  std::vector<NodeState> event_base = problem.chart_base();
+  int event_rebasings = problem.rebasings();
+  std::size_t events_read = 0;
+  const auto read_events = [&](const cont::Branch& branch) {
+    for (; events_read < branch.events.size(); ++events_read) {
+      const cont::Event& e = branch.events[events_read];
+      if (e.x.size() != problem.size()) continue;
+      LoadPointState s = event_rebasings == problem.rebasings()
+                             ? problem.point_state(e.x, e.p)
+                             : problem.point_state_with_base(event_base, e.x, e.p);
+      out.events.push_back(
+          {e.type, step_result(problem, settings.record_nodes, std::move(s), e.p, 0, nullptr)});
+    }
+    if (event_rebasings != problem.rebasings()) {
+      event_base = problem.chart_base();
+      event_rebasings = problem.rebasings();
+    }
+  };
   const cont::Callback on_point = [&](const cont::Point& point, const cont::Branch& branch) {
+    read_events(branch);
     if (branch.points.size() == 1) return true;  // the start point, lambda = 0
-    out.steps.push_back(step_result(problem, settings.record_nodes, point.x, point.p,
+    out.steps.push_back(step_result(problem, settings.record_nodes,
+                                    problem.point_state(point.x, point.p), point.p,
                                     point.newton_iterations, &out.state));
     return !callback || callback(out.steps.back(), out.state);
   };
@@ -126,10 +148,7 @@ StaticResult run_static(const Mesh& mesh, const DofMap& dofs, const ShellElement
       settings.method == PathMethod::kNatural
           ? cont::natural(problem, problem.initial_point(), 0.0, continuation, on_point)
           : cont::pseudo_arclength(problem, problem.initial_point(), 0.0, continuation, on_point);
-  for (const cont::Event& e : branch.events)
-    if (e.x.size() == problem.size())
-      out.events.push_back(
-          {e.type, step_result(problem, settings.record_nodes, e.x, e.p, 0, nullptr)});
+  read_events(branch);  // those of a last step that ended the run in adapt()
   switch (branch.status) {
     case cont::Status::kCompleted:
     case cont::Status::kReachedBound:

@@ -23,6 +23,9 @@ class ChartAssembly {
   // Force and energy at x, the tangent only if the cache already holds x (output of a point
   // that is not where the solver stood).
   const Assembly& force_at(const Eigen::VectorXd& x, double prescribed_scale = 1.0);
+  // Drops the cached assembly: after the chart was re-based (ShellChart::rebase) the same x is
+  // another state.
+  void forget() { x_.resize(0); }
   // Node states of the last at() / force_at().
   const std::vector<NodeState>& states() const { return states_; }
   // Assemblies actually computed (cache misses), with and without the tangent.
