@@ -5,7 +5,9 @@
 namespace si::cont {
 
 struct CholmodFirstFactorization::Impl {
-  explicit Impl(double tolerance) : ldlt(tolerance) {}
+  // CHOLMOD prints "matrix not positive definite" to stderr when the LL' stops: here that is
+  // an answer (the LDL' counts), not a warning for a run's output.
+  explicit Impl(double tolerance) : ldlt(tolerance) { llt.cholmod().print = 0; }
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
   SparseLdlt ldlt;
 };

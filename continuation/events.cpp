@@ -35,7 +35,7 @@ double continuous_value(const Indicator& ind, const Point& pt) {
     case EventType::kLimitPoint:
       return pt.tangent_p;
     case EventType::kZeroCrossing:
-      return value_or_nan(pt.monitors, ind.monitor);
+      return value_or_nan(pt.monitors, ind.monitor) - ind.level;
     case EventType::kMonitorMax:
     case EventType::kMonitorMin:
       return value_or_nan(pt.monitor_slopes, ind.monitor);
@@ -111,6 +111,10 @@ std::vector<Indicator> make_indicators(const Settings& settings,
   for (const auto& name : settings.zero_crossing_monitors)
     out.push_back({EventType::kZeroCrossing,
                    find_monitor(monitor_names, name, "zero_crossing_monitors"), -1});
+  for (const auto& crossing : settings.level_crossings)
+    out.push_back({EventType::kZeroCrossing,
+                   find_monitor(monitor_names, crossing.monitor, "level_crossings"), -1,
+                   crossing.level});
   for (const auto& pair : settings.inflections)
     out.push_back({EventType::kInflection, find_monitor(monitor_names, pair.monitor, "inflections"),
                    find_monitor(monitor_names, pair.against, "inflections")});

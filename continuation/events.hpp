@@ -28,8 +28,9 @@ namespace si::cont {
 
 struct Indicator {
   EventType type = EventType::kLimitPoint;
-  int monitor = -1;  // index into the monitor names (extrema, zero crossings, features)
-  int against = -1;  // inflections: the abscissa monitor; slope extrema: -1 (the parameter)
+  int monitor = -1;    // index into the monitor names (extrema, zero crossings, features)
+  int against = -1;    // inflections: the abscissa monitor; slope extrema: -1 (the parameter)
+  double level = 0.0;  // zero crossings: of m - level (Settings::level_crossings)
 };
 
 // The indicators asked for by the settings. Throws std::invalid_argument naming an unknown

@@ -50,6 +50,13 @@ struct InflectionPair {
   std::string against;
 };
 
+// A monitor reaching a level (m = level), located as a zero crossing of m - level, e.g. a
+// failure index reaching 1.
+struct LevelCrossing {
+  std::string monitor;
+  double level = 0.0;
+};
+
 struct Settings {
   Method method = Method::kPseudoArclength;
   Predictor predictor = Predictor::kTangent;
@@ -87,6 +94,7 @@ struct Settings {
   bool detect_limit_points = true;
   std::vector<std::string> extremum_monitors;
   std::vector<std::string> zero_crossing_monitors;
+  std::vector<LevelCrossing> level_crossings;  // reported as zero crossings of m - level
   std::vector<InflectionPair> inflections;
   bool detect_signature_changes = true;
   bool locate_signature_changes = true;

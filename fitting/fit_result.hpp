@@ -49,7 +49,15 @@ struct FitResult {
   Eigen::VectorXd fitted;       // observed + residuals (empty without observations)
 
   EvaluationCounts evaluations;
-  int nlopt_code = 0;  // NLopt's return code of the first stage (0: not used)
+  // The NLopt stage (nonlinear fits; linear fits leave these empty): the algorithm whose result
+  // was kept, its return code (nlopt.h; negative = failure), whether it was the derivative-free
+  // fallback after the gradient method failed, and its best point before any polish, so that
+  // what NLopt found can be judged on its own.
+  std::string nlopt_algorithm;
+  int nlopt_code = 0;  // 0: NLopt not used
+  bool nlopt_fallback = false;
+  Eigen::VectorXd nlopt_parameters;
+  double nlopt_sse = 0;
 };
 
 }  // namespace si::fit

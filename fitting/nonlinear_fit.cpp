@@ -10,6 +10,7 @@
 
 #include "fitting/fit_statistics.hpp"
 #include "fitting/levenberg_marquardt.hpp"
+#include "fitting/nlopt_status.hpp"
 
 namespace si::fit {
 namespace {
@@ -18,10 +19,18 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // What the NLopt callback sees (NLopt 2.7.1 takes a function pointer and void*: toolchain.md §5).
 // It remembers the best point evaluated, so an exception from NLopt cannot lose it.
+//
+// NLopt minimises S(c) / S(start), not S: the objective and its gradient are then of order one
+// whatever the size of the residuals. Without this, NLopt's first gradient step is unit-length
+// along -grad S (Luksan's PLIS behind LD_LBFGS takes r = 1 when no minimum estimate is given,
+// plis.c), i.e. |grad S| ~ 1e4..1e8 scaled units on NIST's Chwirut2 and Thurber: the trial point
+// overflows, ten bisections cannot bring it back, the line search fails twice and LD_LBFGS
+// returns FAILURE (docs/fitting.md, "Why LD_LBFGS failed").
 struct Objective {
   Evaluator* evaluator = nullptr;
   Eigen::VectorXd scale;
-  Eigen::VectorXd best;  // unscaled parameters
+  double normalization = 1.0;  // S(start); NLopt sees S / normalization
+  Eigen::VectorXd best;        // unscaled parameters
   double best_sse = kInf;
 };
 
@@ -36,48 +45,20 @@ double objective(const std::vector<double>& u, std::vector<double>& grad, void* 
     o.best = c;
   }
   if (!grad.empty()) {
-    // dS/du_j = 2 s_j (J^T r)_j; zero where S is not finite (the line search then backs off).
+    // d(S / S0)/du_j = 2 s_j (J^T r)_j / S0; zero where S is not finite (the line search then
+    // backs off).
     Eigen::Map<Eigen::VectorXd> g(grad.data(), grad.size());
     if (std::isfinite(sse))
-      g = 2.0 * o.scale.cwiseProduct(o.evaluator->jacobian(c).transpose() * r);
+      g = (2.0 / o.normalization) * o.scale.cwiseProduct(o.evaluator->jacobian(c).transpose() * r);
     else
       g.setZero();
   }
-  return sse;
-}
-
-std::string nlopt_code_name(int code) {
-  switch (code) {
-    case 1:
-      return "SUCCESS";
-    case 2:
-      return "STOPVAL_REACHED";
-    case 3:
-      return "FTOL_REACHED";
-    case 4:
-      return "XTOL_REACHED";
-    case 5:
-      return "MAXEVAL_REACHED";
-    case 6:
-      return "MAXTIME_REACHED";
-    case -1:
-      return "FAILURE";
-    case -2:
-      return "INVALID_ARGS";
-    case -3:
-      return "OUT_OF_MEMORY";
-    case -4:
-      return "ROUNDOFF_LIMITED";
-    case -5:
-      return "FORCED_STOP";
-    default:
-      return "code " + std::to_string(code);
-  }
+  return sse / o.normalization;
 }
 
 struct StageOutcome {
   int code = 0;
-  std::string name;
+  std::string name;  // "LD_SLSQP (XTOL_REACHED)"
 };
 
 // Runs one NLopt algorithm from `start`; the best point so far stays in `o`.
@@ -99,19 +80,8 @@ StageOutcome run_nlopt(nlopt::algorithm algorithm, const FitSettings& s, Objecti
   std::vector<double> u = scaled(s.start, 0.0);
   double f = 0;
   StageOutcome out;
-  try {
-    out.code = static_cast<int>(opt.optimize(u, f));
-  } catch (const nlopt::roundoff_limited&) {
-    out.code = static_cast<int>(nlopt::ROUNDOFF_LIMITED);  // best point kept in `o`
-  } catch (const nlopt::forced_stop&) {
-    out.code = static_cast<int>(nlopt::FORCED_STOP);
-  } catch (const std::invalid_argument&) {
-    out.code = static_cast<int>(nlopt::INVALID_ARGS);
-  } catch (const std::runtime_error&) {
-    out.code = static_cast<int>(nlopt::FAILURE);
-  }
-  out.name = std::string(algorithm == nlopt::LD_LBFGS ? "LD_LBFGS" : "LN_BOBYQA") + " (" +
-             nlopt_code_name(out.code) + ")";
+  out.code = optimize_returning_code(opt, u, f);  // the best point is kept in `o`
+  out.name = nlopt_algorithm_name(algorithm) + " (" + nlopt_code_name(out.code) + ")";
   return out;
 }
 
@@ -161,8 +131,10 @@ FitResult fit(const LeastSquaresProblem& problem, const FitSettings& s) {
   o.evaluator = &ev;
   o.scale = scale;
   o.best = s.start;
-  if (!std::isfinite(ev.sum_of_squares(ev.residuals(s.start))))
+  const double sse_start = ev.sum_of_squares(ev.residuals(s.start));
+  if (!std::isfinite(sse_start))
     throw std::invalid_argument("the residuals are not finite at the starting values");
+  o.normalization = sse_start > 0.0 ? sse_start : 1.0;
 
   FitResult res;
   res.names = problem.parameter_names;
@@ -170,15 +142,20 @@ FitResult fit(const LeastSquaresProblem& problem, const FitSettings& s) {
   std::string stages;
   StageOutcome stage;
   if (s.method != Method::kDerivativeFree) {
-    stage = run_nlopt(nlopt::LD_LBFGS, s, o);
+    stage = run_nlopt(nlopt::LD_SLSQP, s, o);
     stages = "NLopt " + stage.name;
+    res.nlopt_algorithm = "LD_SLSQP";
   }
   if (s.method == Method::kDerivativeFree ||
-      (s.method == Method::kAuto && (stage.code < 0 && stage.code != nlopt::ROUNDOFF_LIMITED))) {
+      (s.method == Method::kAuto && is_nlopt_failure(stage.code))) {
+    res.nlopt_fallback = s.method == Method::kAuto;
     stage = run_nlopt(nlopt::LN_BOBYQA, s, o);
     stages += (stages.empty() ? "NLopt " : ", fallback ") + stage.name;
+    res.nlopt_algorithm = "LN_BOBYQA";
   }
   res.nlopt_code = stage.code;
+  res.nlopt_parameters = o.best;
+  res.nlopt_sse = o.best_sse;
   res.method = stages;
 
   Eigen::VectorXd c = o.best;
@@ -191,9 +168,9 @@ FitResult fit(const LeastSquaresProblem& problem, const FitSettings& s) {
     res.method += " + Levenberg-Marquardt polish";
     res.reason += "; Levenberg-Marquardt polish, " + std::to_string(polish.iterations) +
                   " iteration(s): " + polish.reason;
-    // A quasi-Newton line search can leap onto a plateau where the model no longer depends on
-    // some parameters (DanWood from NIST's start 1: b2 -> -6e3, x^b2 = 0). Then, or if the polish
-    // did not converge, Levenberg-Marquardt from the start, whose damped steps stay local.
+    // A line search can leap onto a plateau where the model no longer depends on some
+    // parameters (x^b2 = 0 for b2 -> -inf). Then, or if the polish did not converge,
+    // Levenberg-Marquardt from the start, whose damped steps stay local.
     if (!polish.converged || !has_full_column_rank(ev.jacobian(polish.parameters))) {
       auto from_start = levenberg_marquardt(ev, s.start, s.lower, s.upper, lm);
       if (from_start.converged && from_start.sse < polish.sse) {

@@ -3,9 +3,13 @@
 // come from the Jacobian at the solution (fit_statistics.hpp).
 //
 // NLopt works on the parameters divided by their scale (|start|, or the bound width, or 1), so
-// that all are of order one. The first stage is the gradient method LD_LBFGS with the exact
-// gradient 2 J^T r; if it fails (an NLopt error, or no finite point) the derivative-free LN_BOBYQA
-// takes over from the start. With Method::kDerivativeFree only LN_BOBYQA is used.
+// that all are of order one, and on S / S(start), so that the objective and its gradient are of
+// order one too. The first stage is the gradient method LD_SLSQP (Kraft 1988: quasi-Newton SQP,
+// bounds inside its subproblem) with the exact gradient 2 J^T r; if it ends in an NLopt error
+// the derivative-free LN_BOBYQA takes over from the start, and the result says so
+// (FitResult::nlopt_fallback). With Method::kDerivativeFree only LN_BOBYQA is used. LD_LBFGS was
+// the first stage until it was found to fail on unscaled objectives and to stop on plateaus
+// (docs/fitting.md, "Why LD_LBFGS failed").
 #pragma once
 
 #include <Eigen/Dense>

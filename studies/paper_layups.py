@@ -47,6 +47,8 @@ VARIANTS = {
     "mid": ("paper_layups_mid.yaml", "contact on the mid-surface (the paper's choice)"),
     "quarter": ("paper_layups_quarter.yaml", "quarter model (specially orthotropic lay-ups only)"),
     "bernstein4": ("paper_layups_bernstein4.yaml", "the paper's Bernstein element (bernstein4)"),
+    "local": ("paper_layups_local.yaml",
+              "local indentation in series (contact.local: anisotropic, plate support)"),
 }
 # Variants whose sweep is expected to fail, with the phrase every failed case's reason must hold.
 # bernstein4: the paper's shape functions have no partition of unity, so the mapped surface of

@@ -29,6 +29,12 @@ K12_CONTACT_MIN_PER_MM = "k12_contact_min_per_mm"
 K12_CONTACT_MAX_PER_MM = "k12_contact_max_per_mm"
 K22_CONTACT_MIN_PER_MM = "k22_contact_min_per_mm"
 K22_CONTACT_MAX_PER_MM = "k22_contact_max_per_mm"
+MAX_STRESS_INDEX = "max_stress_index"
+TSAI_WU_INDEX = "tsai_wu_index"
+HASHIN_INDEX = "hashin_index"
+DELAMINATION_INDEX = "delamination_index"
+STABLE = "stable"
+LOWEST_EIGENVALUE = "lowest_eigenvalue"
 
 # All columns, in path.csv's order.
 PATH_COLUMNS = (
@@ -57,6 +63,12 @@ PATH_COLUMNS = (
     K12_CONTACT_MAX_PER_MM,
     K22_CONTACT_MIN_PER_MM,
     K22_CONTACT_MAX_PER_MM,
+    MAX_STRESS_INDEX,
+    TSAI_WU_INDEX,
+    HASHIN_INDEX,
+    DELAMINATION_INDEX,
+    STABLE,
+    LOWEST_EIGENVALUE,
 )
 
 UNITS = {
@@ -85,4 +97,10 @@ UNITS = {
     K12_CONTACT_MAX_PER_MM: "1/mm",
     K22_CONTACT_MIN_PER_MM: "1/mm",
     K22_CONTACT_MAX_PER_MM: "1/mm",
+    MAX_STRESS_INDEX: "-",
+    TSAI_WU_INDEX: "-",
+    HASHIN_INDEX: "-",
+    DELAMINATION_INDEX: "-",
+    STABLE: "-",
+    LOWEST_EIGENVALUE: "N/mm",
 }

@@ -52,6 +52,7 @@ FULL_FILTER = ":".join([
     "LinearShellBenchmarks.*", "LaminateNavier.*", "InPlaneCantilever.*",
     "NonlinearShellBenchmarks.*", "ClampedPlateLinear.*", "PointLoads.*",
     "ClampedPlateSphere.*", "ContactVerification.*", "HertzDent.*", "LocalIndentation*",
+    "AnisotropicHalfSpace.*", "LayerCompliance.*", "SphereOnLayer.*",
     "ContPseudoArclength.*", "ContEvents.*", "SzeHingedRoof.*",
     "NistLinear.*", "*NistNonlinear.*",
 ])

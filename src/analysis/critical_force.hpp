@@ -1,15 +1,24 @@
-// The paper's critical contact force (P12, Figs 10-11): the inflection point of T_N plotted
-// against an apex curvature (k11 or k22), found on the converged points of a path.
+// The paper's critical contact force (P12, Figs 10-11): the inflection of T_N plotted against an
+// apex curvature (k11 or k22), reported only where it is resolved (docs/theory/continuation.md,
+// "Curve features"; issue 15: the raw sign changes of d2T/dk2 sit on the kinks where nodes enter
+// contact and inside exactly linear segments, and were reported as critical forces).
 //
-// Why not the continuation library's located inflection events: d2 T / dk2 jumps wherever the
-// contact set changes (a node enters contact), so along an indentation path it changes sign at
-// many contact changes; locating each by bisection costs dozens of corrector solves and reports
-// noise. Here the second derivative is the three-point divided difference on the path's points,
-// and an inflection is reported only where its sign changes and then stays changed for
-// `persistence` consecutive points on each side (3 by default: on the paper cap a persistence of 2
-// still reported contact-change wiggles of T_N against k11 as inflections). The depth and force are
-// interpolated linearly between the two points that bracket the change; the accuracy is the
-// bracket's depth width.
+// Found on the path's converged points (every method), with the library's curve-feature rules
+// (cont::feature_value, cont::resolved_sign) and derivatives in the depth by three-point divided
+// differences; the library's located inflections were 5.8 times the main job's time
+// (indentation_run.cpp):
+//  1. noise: the second differences' error from the solves' accuracy (1e-9 of the coordinate's
+//     largest magnitude per point) - inside an exactly linear segment g is roundoff;
+//  2. scale: the curvature of the (k, T) curve in its own scale (each coordinate over its range
+//     on the path) must exceed 1e-3 (cont::Settings::feature_curvature_tolerance);
+//  4. kinks: a stencil across a change of the contact set (a kink: one-sided derivatives jump)
+//     has no sign; a sign change is an inflection only between two signed points whose stencils
+//     share one contact set.
+// Rule 3 (confirmation by re-solving inside the step) is not applied: an inflection is not
+// located (accuracy = the bracket's depth width). Points restored from a checkpoint carry no
+// contact set and no sign (a resumed run reports none before its checkpoint). With linear
+// kinematics T and k are linear in the depth on each contact set, so the linear path never has one:
+// "none" is the answer, said plainly.
 #pragma once
 
 #include <string>
@@ -20,7 +29,6 @@
 namespace si {
 
 // curvature: 0 = k11, 1 = k12 + k21, 2 = k22 (IndentationState::apex_curvature).
-std::vector<cont::Event> critical_force_events(const std::vector<PathPoint>& points, int curvature,
-                                               int persistence = 3);
+std::vector<cont::Event> critical_force_events(const std::vector<PathPoint>& points, int curvature);
 
 }  // namespace si

@@ -3,7 +3,10 @@
 // it (CaseFile extends it with the output settings); the runs take nothing else.
 #pragma once
 
+#include <optional>
+
 #include "analysis/contact_spec.hpp"
+#include "analysis/damage_spec.hpp"
 #include "analysis/path_spec.hpp"
 #include "contact/indenter_spec.hpp"
 #include "model/shell_model.hpp"
@@ -14,6 +17,7 @@ struct IndentationCase : ShellModelSpec {
   IndenterSpec indenter;
   ContactSpec contact;
   PathSpec path;
+  std::optional<DamageSpec> damage;  // the `damage:` section; none: no damage output at all
 };
 
 // The contact face offset of a case: the laminate's top face (contact.surface: outer) or its

@@ -24,6 +24,11 @@
 namespace si {
 namespace {
 
+// The criteria whose failure indices the run monitors (their columns are the run's).
+std::vector<Criterion> monitored_criteria(const IndentationCase& c) {
+  return c.damage ? c.damage->criteria : std::vector<Criterion>{};
+}
+
 IndentationOptions options_of(const IndentationCase& c, int threads,
                               JacobianSolverKind linear_solver) {
   IndentationOptions o;
@@ -40,23 +45,44 @@ IndentationOptions options_of(const IndentationCase& c, int threads,
   o.interpolated.fbar = c.contact.fbar;
   if (c.contact.fbar) o.interpolated.fbar_top = analyze_vam(c.laminate).Fbar_top;
   o.local = local_contact_law(c);
-  o.monitors = path_monitors();
+  o.monitors = path_monitors(run_columns(monitored_criteria(c)));
   return o;
 }
 
-// The accumulated indenter work and the point, appended to the result.
+// A point's stability as the continuation computed it; negative = -1: not computed.
+struct PointStability {
+  int negative = -1;
+  bool stable = false;
+  double lowest = std::nan("");
+};
+
+PointStability stability_of(const cont::Point& pt) {
+  return {pt.negative_eigenvalues, pt.stable, pt.lowest_eigenvalue};
+}
+
+// The accumulated indenter work and the point, appended to the result. With path.stability
+// (result.stability), a point the continuation did not analyse (the depth grids') is analysed
+// here.
 class PathRecorder {
  public:
   PathRecorder(PathResult& result, const PathCallback& callback)
       : result_(result), callback_(callback) {}
   bool add(IndentationProblem& problem, const cont::Vector& z, double h, int iterations,
-           double step, const Eigen::VectorXd& depth_slopes = {}) {
+           double step, const Eigen::VectorXd& depth_slopes = {}, PointStability stability = {}) {
     PathPoint p;
     p.index = static_cast<int>(result_.points.size());
     p.state = problem.evaluate(z, h);
     p.iterations = iterations;
     p.step = step;
     p.depth_slopes = depth_slopes;
+    if (result_.stability && stability.negative < 0) {
+      cont::Stability s;
+      if (problem.stability(z, h, 1, s))
+        stability = {s.negative, s.negative == 0 && s.zero == 0, s.eigenvalues[0]};
+    }
+    p.negative_eigenvalues = stability.negative;
+    p.stable = stability.stable;
+    p.lowest_eigenvalue = stability.lowest;
     if (!result_.points.empty()) {
       const IndentationState& prev = result_.points.back().state;
       p.work = result_.points.back().work +
@@ -81,12 +107,89 @@ void finish(PathResult& r, bool completed, RunStatus status, const std::string& 
 // failed, empty on success, and the iterations it took.
 using DepthSolve = std::function<std::string(double h, cont::Vector& z, int& iterations)>;
 
+// Onset events between the last two points of a grid: where a failure index reaches 1. With an
+// exact solve per depth (`solve`, the linear fast path) located by the Illinois regula falsi to
+// 1e-10 of the depth (one step when the index is linear in the depth); otherwise (the active-set
+// grid, whose solves may grow the candidate set) interpolated linearly and marked not located.
+void locate_onsets(IndentationSetup& s, PathResult& r, const cont::Vector& z_previous,
+                   const DepthSolve& solve) {
+  const PathPoint& a = r.points[r.points.size() - 2];
+  const PathPoint& b = r.points.back();
+  const std::vector<PathColumn> columns = result_columns(r);
+  for (Criterion c : r.criteria) {
+    const double fa = a.state.failure[static_cast<int>(c)].index - 1;
+    const double fb = b.state.failure[static_cast<int>(c)].index - 1;
+    if (!(fa < 0 && fb >= 0)) continue;
+    cont::Event e;
+    e.type = cont::EventType::kZeroCrossing;
+    e.monitor = column_name(failure_column(c));
+    e.step = b.index;
+    double lo = a.state.depth, hi = b.state.depth, flo = fa, fhi = fb;
+    e.p = lo + (hi - lo) * flo / (flo - fhi);
+    e.located = static_cast<bool>(solve);
+    e.accuracy = hi - lo;
+    IndentationState state = b.state;
+    int kept = 0;  // the end replaced last: -1 lo, +1 hi (Illinois halves the other's value)
+    for (int it = 0; solve && it < 60; ++it) {
+      cont::Vector z = z_previous;
+      int iterations = 0;
+      if (!solve(e.p, z, iterations).empty()) {
+        e.located = false;
+        break;
+      }
+      state = s.problem->evaluate(z, e.p);
+      e.x = z;
+      const double f = state.failure[static_cast<int>(c)].index - 1;
+      if (f < 0) {
+        lo = e.p, flo = f;
+        if (kept == -1) fhi *= 0.5;
+        kept = -1;
+      } else {
+        hi = e.p, fhi = f;
+        if (kept == 1) flo *= 0.5;
+        kept = 1;
+      }
+      // The bracket, or the depth error of the residual index over the segment's slope.
+      e.accuracy = std::min(hi - lo, std::abs(f) * (b.state.depth - a.state.depth) / (fb - fa));
+      if (std::abs(f) <= 1e-12 || hi - lo <= 1e-10 * (1 + hi)) break;
+      e.p = lo + (hi - lo) * flo / (flo - fhi);
+    }
+    e.monitors = monitor_values(solve ? state : b.state, columns);
+    r.events.push_back(e);
+  }
+}
+
+// The stability changes between the points of a depth grid, not located (no continuation to
+// bisect along): one event per change of the negative count, at the later point.
+std::vector<cont::Event> grid_stability_events(const PathResult& r) {
+  std::vector<cont::Event> events;
+  for (std::size_t i = 1; i < r.points.size(); ++i) {
+    const PathPoint &a = r.points[i - 1], &b = r.points[i];
+    if (a.negative_eigenvalues < 0 || b.negative_eigenvalues < 0 ||
+        a.negative_eigenvalues == b.negative_eigenvalues)
+      continue;
+    cont::Event e;
+    e.type = cont::EventType::kStabilityChange;
+    e.name = cont::event_type_name(e.type);
+    e.p = b.state.depth;
+    e.monitors = monitor_values(b.state, result_columns(r));
+    e.step = static_cast<int>(i);
+    e.accuracy = b.state.depth - a.state.depth;
+    e.negative_before = a.negative_eigenvalues;
+    e.negative_after = b.negative_eigenvalues;
+    events.push_back(e);
+  }
+  return events;
+}
+
 // The depth grid, one solve per depth, from the undeformed start.
 PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback, RunMethod method,
                           const DepthSolve& solve) {
   PathResult r;
   r.method = method;
+  r.stability = s.spec.path.stability;
   r.monitor_names = s.problem->monitor_names();
+  r.criteria = monitored_criteria(s.spec);
   PathRecorder rec(r, callback);
   cont::Vector z = s.problem->initial_point();
   r.final_unknowns = z;
@@ -102,13 +205,20 @@ PathResult run_depth_grid(IndentationSetup& s, const PathCallback& callback, Run
       finish(r, false, RunStatus::kFailed, "depth " + std::to_string(h) + " mm: " + failure);
       return r;
     }
+    const cont::Vector z_previous = r.final_unknowns;
     r.final_unknowns = z;
     if (!rec.add(*s.problem, z, h, iterations, h - previous)) {
       finish(r, false, RunStatus::kStopped, "stopped by the user");
       return r;
     }
+    locate_onsets(s, r, z_previous, method == RunMethod::kLinearFastPath ? solve : DepthSolve());
     previous = h;
   }
+  // Beside the onsets found on the way, in depth order.
+  const std::vector<cont::Event> changes = grid_stability_events(r);
+  r.events.insert(r.events.end(), changes.begin(), changes.end());
+  std::stable_sort(r.events.begin(), r.events.end(),
+                   [](const cont::Event& a, const cont::Event& b) { return a.p < b.p; });
   finish(r, true, RunStatus::kCompleted, "");
   return r;
 }
@@ -168,20 +278,22 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   c.p_max = path.depth_max;
   c.p_min = -path.depth_max;  // a snap-back may reduce the depth; never below minus the path
   c.max_steps = static_cast<int>(20 * path.depth_max / path.step) + 100;
-  c.newton.relative_tolerance = 1e-10;
-  // The force a gap of one depth step would carry: the scale of the equilibrium residual.
-  c.newton.residual_scale = s.problem->stiffness_scale() * path.step;
-  c.newton.max_iterations = 25;
-  // KINSOL's step limit is an L2 length over all unknowns, and the multipliers are forces (N):
-  // its default, 1000 max(1, |z0|), cuts the Newton steps of a stiff shell short (measured: 2 %
-  // residual decrease per iteration on the paper's cap). Allow any step the line search accepts.
-  c.newton.max_step = 1e12;
+  c.newton = path_newton_settings(s);
   c.extremum_monitors = {column_name(PathColumn::kForce)};
-  // Inflections of T_N against k11, k22 (the critical force) come from the points afterwards
-  // (critical_force.hpp): located ones would sit on every contact-set change.
+  // Damage onset: each monitored failure index reaching 1 (analysis/damage_results.hpp).
+  if (s.spec.damage)
+    for (Criterion k : s.spec.damage->criteria)
+      c.level_crossings.push_back({column_name(failure_column(k)), 1.0});
+  // Inflections of T_N against k11, k22 (the critical force) come from the points afterwards,
+  // by the curve-feature rules (critical_force.hpp). The library's located ones (inflections)
+  // re-solve inside every step with a resolved sign change and evaluate second derivatives at
+  // every point: measured 5.8 times the main job's time, and the re-solves change the solver's
+  // warm state (the path's last bits, at the 1e-10 tolerance).
   c.detect_signature_changes = true;
   c.locate_signature_changes = false;  // contact grows node by node: report, do not bisect
   if (c.method == cont::Method::kNatural) c.parameter_values = depth_grid(path);
+  // The lowest mode: a change of the count by more than one is located by bisection on it.
+  c.stability_modes = path.stability ? 1 : 0;
   return c;
 }
 
@@ -200,7 +312,7 @@ Eigen::VectorXd depth_slopes(const cont::Point& pt) {
 nlohmann::json path_attachment(const IndentationProblem& problem, const PathResult& r,
                                const PathControl& control) {
   nlohmann::json points = nlohmann::json::array();
-  for (const PathPoint& p : r.points) points.push_back(path_point_values(p));
+  for (const PathPoint& p : r.points) points.push_back(path_point_values(p, result_columns(r)));
   return {{"candidates", problem.candidates()},
           {"points", points},
           {"record", control.save_record ? control.save_record() : nlohmann::json()}};
@@ -230,7 +342,9 @@ cont::Checkpoint restore(const PathControl& control, IndentationProblem& problem
     throw_input("cannot resume: the checkpoint does not belong to this case", where);
   problem.restore_candidates(candidates);
   for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
-    r.points.push_back(path_point_from_values(a["points"][i].get<std::vector<double>>()));
+    r.points.push_back(
+        path_point_from_values(a["points"][i].get<std::vector<double>>(), result_columns(r)));
+    r.points.back().negative_eigenvalues = c.branch.points[i].negative_eigenvalues;
     r.points.back().index = static_cast<int>(i);
     r.points.back().depth_slopes = depth_slopes(c.branch.points[i]);
   }
@@ -250,10 +364,12 @@ std::string end_reason(const cont::Branch& b, const PathSpec& path) {
 PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
                             const PathControl& control) {
   PathResult r;
+  r.stability = s.spec.path.stability;
   cont::Settings settings = continuation_settings(s);
   r.method =
       settings.method == cont::Method::kNatural ? RunMethod::kNatural : RunMethod::kPseudoArclength;
   r.monitor_names = s.problem->monitor_names();
+  r.criteria = monitored_criteria(s.spec);
   settings.checkpoint_path = control.checkpoint;
   settings.checkpoint_writer = [](const std::string& path, const std::string& text) {
     write_file_atomically(path, text);
@@ -263,7 +379,8 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   settings.checkpoint_attachment = [&] { return path_attachment(*s.problem, r, control); };
   PathRecorder rec(r, callback);
   const cont::Callback on_point = [&](const cont::Point& pt, const cont::Branch&) {
-    return rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step, depth_slopes(pt));
+    return rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step, depth_slopes(pt),
+                   stability_of(pt));
   };
   const bool natural = settings.method == cont::Method::kNatural;
   cont::Branch b;
@@ -285,6 +402,19 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
 }
 
 }  // namespace
+
+cont::NewtonSettings path_newton_settings(const IndentationSetup& s) {
+  cont::NewtonSettings n;
+  n.relative_tolerance = 1e-10;
+  // The force a gap of one depth step would carry: the scale of the equilibrium residual.
+  n.residual_scale = s.problem->stiffness_scale() * s.spec.path.step;
+  n.max_iterations = 25;
+  // KINSOL's step limit is an L2 length over all unknowns, and the multipliers are forces (N):
+  // its default, 1000 max(1, |z0|), cuts the Newton steps of a stiff shell short (measured: 2 %
+  // residual decrease per iteration on the paper's cap). Allow any step the line search accepts.
+  n.max_step = 1e12;
+  return n;
+}
 
 IndenterPose default_indenter_pose(const IndentationCase& c, const ShellModel& model) {
   IndenterPose pose;
@@ -327,6 +457,11 @@ IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolve
     // The problem names `indenter`; the case's pose is what the user can change.
     throw Error(e.kind(), e.reason(), Where{spec.file, where, value, 0});
   }
+  if (spec.damage && !spec.damage->criteria.empty()) {
+    damage = std::make_shared<DamageProbe>(model, problem->assembler(), spec.laminate, *spec.damage,
+                                           pose.direction, problem->candidates());
+    problem->set_probe(damage);
+  }
 }
 
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback,
@@ -342,6 +477,7 @@ PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& cal
     const std::vector<cont::Event> found = critical_force_events(r.points, k);
     r.events.insert(r.events.end(), found.begin(), found.end());
   }
+  add_damage_results(setup, r);
   return r;
 }
 

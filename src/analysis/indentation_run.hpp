@@ -13,14 +13,18 @@
 // The depth grid is path.depths, or 0, step, 2 step, ..., depth_max.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "analysis/damage_probe.hpp"
+#include "analysis/damage_results.hpp"
 #include "analysis/indentation_case.hpp"
 #include "continuation/branch.hpp"
+#include "continuation/settings.hpp"
 #include "indentation/indentation_problem.hpp"
 #include "model/shell_model.hpp"
 
@@ -33,6 +37,9 @@ struct IndentationSetup {
   IndenterPose pose;
   std::unique_ptr<Indenter> indenter;
   std::unique_ptr<IndentationProblem> problem;
+  // The failure indices at the nodes near the indenter (a case whose `damage:` section names
+  // criteria); the problem's probe.
+  std::shared_ptr<const DamageProbe> damage;
 
   // Throws an input error naming the case file and key for a case that cannot run.
   // linear_solver: the contact Jacobian's solver (indentation_problem.hpp, docs/performance.md).
@@ -53,6 +60,12 @@ struct PathPoint {
   // d(monitor)/d(depth) along the branch, one per PathResult::monitor_names (continuation runs;
   // NaN where the branch is nearly vertical in depth, at a fold); empty where unknown.
   Eigen::VectorXd depth_slopes;
+  // path.stability: the tangent restricted to the active contacts (IndentationProblem::stability)
+  // - its number of negative eigenvalues (-1: not computed), stable (none negative or zero), and
+  // its lowest eigenvalue (N/mm in the shell's chart coordinates).
+  int negative_eigenvalues = -1;
+  bool stable = false;
+  double lowest_eigenvalue = std::nan("");
 };
 
 // How a path was computed (see the header): the linear fast path, the active-set grid, or a
@@ -77,11 +90,15 @@ struct PathResult {
   std::vector<PathPoint> points;
   std::vector<cont::Event> events;
   std::vector<std::string> monitor_names;
-  bool completed = false;  // reached the end of the path
+  std::vector<Criterion> criteria;  // monitored: their failure-index columns are the run's
+  DamageResults damage;             // a case with a `damage:` section (damage_results.hpp)
+  bool completed = false;           // reached the end of the path
   RunStatus status = RunStatus::kFailed;
   std::string reason;  // why it stopped early; empty when completed
   // The problem's unknowns at the last point (to write its fields); empty if there is none.
   cont::Vector final_unknowns;
+  // path.stability: every point has its stability, and the results carry its columns.
+  bool stability = false;
 };
 
 // Called after each accepted point with the point and the problem's unknowns; returning false
@@ -106,6 +123,10 @@ struct PathControl {
   std::function<nlohmann::json()> save_record;
   std::function<void(const nlohmann::json&)> restore_record;
 };
+
+// The Newton settings of a continuation run's corrector, for solves at a fixed depth outside a
+// path (io/force_travel.hpp's warm starts).
+cont::NewtonSettings path_newton_settings(const IndentationSetup& setup);
 
 // Runs the path. Numerical failures do not throw: they end the path with the reason.
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback = {},

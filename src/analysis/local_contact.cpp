@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "contact/anisotropic_local_law.hpp"
 #include "core/error.hpp"
 #include "section/vam_section.hpp"
 
@@ -28,7 +29,7 @@ LocalContactLaw local_contact_law(const IndentationCase& c) {
     if (!(compliance > 0))
       throw_input("the section's face compliance c_L++ (local law vam) is not positive",
                   Where{c.file, "contact.local", "", 0});
-    return {LocalLawKind::kThinLayer, 0.0, compliance, 0.0};
+    return {LocalLawKind::kThinLayer, 0.0, compliance, 0.0, nullptr};
   }
   // The case-file reader refuses other shapes, naming the key (io/case_file.cpp).
   SI_REQUIRE(c.indenter.shape == IndenterShape::kSphere,
@@ -40,6 +41,11 @@ LocalContactLaw local_contact_law(const IndentationCase& c) {
   if (m == LocalContactModel::kYangSun) return yang_sun_law(Ri, Ei, nui, top.E3);
   const double R =
       c.shell.type == ShellType::kSphericalCap ? 1 / (1 / Ri + 1 / c.shell.radius) : Ri;
+  if (m == LocalContactModel::kAnisotropic) {
+    const double indenter = Ei > 0 ? 2 * (1 - nui * nui) / Ei : 0.0;
+    return anisotropic_local_law(c.laminate,
+                                 {c.contact.local_support, c.contact.local_plies, R, indenter});
+  }
   return hertz_law(R, hertz_modulus(Ei, nui, top.E3, top.nu23));
 }
 

@@ -1,5 +1,6 @@
 #include "analysis/path_columns.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "core/error.hpp"
@@ -19,6 +20,16 @@ double extreme(const S& s) {
 template <int k, bool largest>
 void restore_extreme(PathPoint& p, double v) {
   (largest ? p.state.contact_curvature_max : p.state.contact_curvature_min)[k] = v;
+}
+
+// The failure index of Criterion k (IndentationState::failure) and its inverse.
+template <int k>
+double failure_index(const S& s) {
+  return s.failure[k].index;
+}
+template <int k>
+void restore_failure_index(PathPoint& p, double v) {
+  p.state.failure[k].index = v;
 }
 
 std::vector<ColumnSpec> make_columns() {
@@ -136,6 +147,50 @@ std::vector<ColumnSpec> make_columns() {
   for (int i = 0; i < 6; ++i)
     c.push_back({static_cast<PathColumn>(static_cast<int>(PathColumn::kK11ContactMin) + i),
                  names[i], "1/mm", descriptions[i], value[i], nullptr, restore[i]});
+  // The failure indices (analysis/damage_probe.hpp): the largest over the monitored nodes.
+  const std::string index =
+      " over the monitored nodes near the indenter (bottom, middle and top of every ply; "
+      "docs/theory/failure.md 6): the inverse load factor to onset, 1 = onset (an event "
+      "`damage_onset` in events.json and path.json's `damage`)";
+  c.push_back({PathColumn::kMaxStressIndex, "max_stress_index", "-",
+               "largest maximum-stress failure index" + index, failure_index<0>, nullptr,
+               restore_failure_index<0>, true, G::kHermite, Criterion::kMaxStress});
+  c.push_back({PathColumn::kTsaiWuIndex, "tsai_wu_index", "-",
+               "largest Tsai-Wu failure index" + index, failure_index<1>, nullptr,
+               restore_failure_index<1>, true, G::kHermite, Criterion::kTsaiWu});
+  c.push_back({PathColumn::kHashinIndex, "hashin_index", "-",
+               "largest Hashin (3-D, four modes) failure index" + index, failure_index<2>, nullptr,
+               restore_failure_index<2>, true, G::kHermite, Criterion::kHashin});
+  c.push_back({PathColumn::kDelaminationIndex, "delamination_index", "-",
+               "largest quadratic interlaminar (Brewer-Lagace) index on the interfaces" + index,
+               failure_index<3>, nullptr, restore_failure_index<3>, true, G::kHermite,
+               Criterion::kQuadraticDelamination});
+  // The stability of the point (path.stability; docs/theory/continuation.md 9, 12).
+  ColumnSpec stable{PathColumn::kStable,
+                    "stable",
+                    "-",
+                    "1 if the point is a stable equilibrium on its contact set: the tangent "
+                    "restricted to the directions that keep the pressing contacts has no "
+                    "negative and no numerically zero eigenvalue; else 0 (written with "
+                    "`path.stability: true`; path_grid.csv: 1 only between two stable points)",
+                    nullptr,
+                    [](const PathPoint& p) { return p.stable ? 1.0 : 0.0; },
+                    [](PathPoint& p, double v) { p.stable = v != 0; }};
+  stable.grid = G::kMinimum;
+  stable.stability = true;
+  ColumnSpec lowest{PathColumn::kLowestEigenvalue,
+                    "lowest_eigenvalue",
+                    "N/mm",
+                    "lowest eigenvalue of that restricted tangent (the Hessian of the energy in "
+                    "the shell's chart coordinates, mm and rad, so N/mm for a mode of "
+                    "translations); it crosses zero where the point loses stability (written "
+                    "with `path.stability: true`)",
+                    nullptr,
+                    [](const PathPoint& p) { return p.lowest_eigenvalue; },
+                    [](PathPoint& p, double v) { p.lowest_eigenvalue = v; }};
+  lowest.stability = true;
+  c.push_back(stable);
+  c.push_back(lowest);
   for (std::size_t i = 0; i < c.size(); ++i)
     SI_ASSERT(static_cast<std::size_t>(c[i].id) == i);  // the table is in PathColumn's order
   return c;
@@ -160,32 +215,63 @@ double column_value(const ColumnSpec& c, const PathPoint& p) {
   return c.of_state ? c.of_state(p.state) : c.of_point(p);
 }
 
-std::vector<double> path_point_values(const PathPoint& p) {
+std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored, bool stability) {
+  std::vector<PathColumn> out;
+  for (const ColumnSpec& c : path_columns()) {
+    if (c.stability && !stability) continue;
+    if (!c.criterion ||
+        std::find(monitored.begin(), monitored.end(), *c.criterion) != monitored.end())
+      out.push_back(c.id);
+  }
+  return out;
+}
+
+std::vector<PathColumn> result_columns(const PathResult& r) {
+  return run_columns(r.criteria, r.stability);
+}
+
+const std::vector<PathColumn>& base_columns() {
+  static const std::vector<PathColumn> columns = run_columns({});
+  return columns;
+}
+
+PathColumn failure_column(Criterion criterion) {
+  for (const ColumnSpec& c : path_columns())
+    if (c.criterion == criterion) return c.id;
+  SI_ASSERT(false);  // every criterion has its column
+  return PathColumn::kDepth;
+}
+
+std::vector<double> path_point_values(const PathPoint& p, const std::vector<PathColumn>& columns) {
   std::vector<double> v;
-  for (const ColumnSpec& c : path_columns()) v.push_back(column_value(c, p));
+  for (PathColumn c : columns) v.push_back(column_value(path_column(c), p));
   return v;
 }
 
-PathPoint path_point_from_values(const std::vector<double>& v) {
-  const std::vector<ColumnSpec>& columns = path_columns();
+PathPoint path_point_from_values(const std::vector<double>& v,
+                                 const std::vector<PathColumn>& columns) {
   SI_REQUIRE(v.size() == columns.size(),
              "a path point has " + std::to_string(columns.size()) + " values");
   PathPoint p;
-  for (std::size_t i = 0; i < columns.size(); ++i) columns[i].restore(p, v[i]);
+  for (std::size_t i = 0; i < columns.size(); ++i) path_column(columns[i]).restore(p, v[i]);
   return p;
 }
 
-std::vector<StateMonitor> path_monitors() {
+std::vector<StateMonitor> path_monitors(const std::vector<PathColumn>& columns) {
   std::vector<StateMonitor> m;
-  for (const ColumnSpec& c : path_columns())
+  for (PathColumn id : columns) {
+    const ColumnSpec& c = path_column(id);
     if (c.monitor) m.push_back({c.name, c.of_state});
+  }
   return m;
 }
 
-Eigen::VectorXd monitor_values(const IndentationState& s) {
+Eigen::VectorXd monitor_values(const IndentationState& s, const std::vector<PathColumn>& columns) {
   std::vector<double> v;
-  for (const ColumnSpec& c : path_columns())
+  for (PathColumn id : columns) {
+    const ColumnSpec& c = path_column(id);
     if (c.monitor) v.push_back(c.of_state(s));
+  }
   return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
 }
 

@@ -8,6 +8,7 @@
 // if they differ from it).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,16 @@ enum class PathColumn {
   kK12ContactMin,
   kK12ContactMax,
   kK22ContactMin,
-  kK22ContactMax
+  kK22ContactMax,
+  // The failure indices (damage/failure_index.hpp), only in runs whose case monitors the
+  // criterion (docs/case-file.md `damage.criteria`).
+  kMaxStressIndex,
+  kTsaiWuIndex,
+  kHashinIndex,
+  kDelaminationIndex,
+  // The point's stability, only in runs with path.stability: true.
+  kStable,
+  kLowestEigenvalue
 };
 
 // How path_grid.csv interpolates a column between two converged points (docs/results.md).
@@ -51,7 +61,8 @@ enum class GridInterpolation {
   kHermiteForce,  // the same with the force as slope (the work: dW/dh = T_N)
   // The same where the local energy is zero at both ends (the strain energy without a local
   // law: dU/dh = T_N at equilibrium), linear otherwise.
-  kHermiteForceWithoutLocalLaw
+  kHermiteForceWithoutLocalLaw,
+  kMinimum  // the smaller end (a flag: 1 inside only if 1 at both ends)
 };
 
 struct ColumnSpec {
@@ -65,6 +76,11 @@ struct ColumnSpec {
   void (*restore)(PathPoint&, double) = nullptr;  // the inverse (checkpoints)
   bool monitor = false;  // a continuation monitor (of_state, no assembly needed)
   GridInterpolation grid = GridInterpolation::kLinear;
+  // A failure index: present only in the runs that monitor this criterion.
+  std::optional<Criterion> criterion = std::nullopt;
+  // Written only by runs that compute the points' stability (path.stability: true), so that a
+  // run without it writes exactly what it wrote before the columns existed.
+  bool stability = false;
 };
 
 // All columns, in path.csv's order (the order of PathColumn).
@@ -73,13 +89,28 @@ const ColumnSpec& path_column(PathColumn id);
 const char* column_name(PathColumn id);
 double column_value(const ColumnSpec& c, const PathPoint& p);
 
-// A point's values in column order, and the point they restore (its per-node vectors empty).
-std::vector<double> path_point_values(const PathPoint& p);
-PathPoint path_point_from_values(const std::vector<double>& v);
+// The columns of a run, in table order: those of every run, the failure index of each
+// criterion it monitors, and with `stability` (path.stability) the stability columns.
+// base_columns(): a run without damage (run_columns({})).
+std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored,
+                                    bool stability = false);
+// The columns of a result: its monitored criteria's, and the stability columns if it has them.
+std::vector<PathColumn> result_columns(const PathResult& r);
+const std::vector<PathColumn>& base_columns();
+// The column of a criterion's failure index.
+PathColumn failure_column(Criterion criterion);
 
-// The monitor columns, in column order: the continuation's monitors of an indentation run.
-std::vector<StateMonitor> path_monitors();
+// A point's values in the order of `columns`, and the point they restore (its per-node vectors
+// empty).
+std::vector<double> path_point_values(const PathPoint& p,
+                                      const std::vector<PathColumn>& columns = base_columns());
+PathPoint path_point_from_values(const std::vector<double>& v,
+                                 const std::vector<PathColumn>& columns = base_columns());
+
+// The monitor columns among `columns`, in their order: the continuation's monitors of a run.
+std::vector<StateMonitor> path_monitors(const std::vector<PathColumn>& columns = base_columns());
 // Their values at a state, in the same order.
-Eigen::VectorXd monitor_values(const IndentationState& s);
+Eigen::VectorXd monitor_values(const IndentationState& s,
+                               const std::vector<PathColumn>& columns = base_columns());
 
 }  // namespace si

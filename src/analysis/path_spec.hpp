@@ -15,6 +15,9 @@ struct PathSpec {
   double step_min = 1e-4;      // default: step / 1000
   double step_max = 1.0;       // default: min(10 step, depth_max)
   std::vector<double> depths;  // optional explicit depths to stop at, increasing, <= depth_max
+  // The stability of every point (docs/theory/continuation.md 12) and its changes as events;
+  // off by default: the run is then exactly the one without it.
+  bool stability = false;
 };
 
 // The depth grid of a path: `depths`, or step, 2 step, ..., depth_max.

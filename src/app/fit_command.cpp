@@ -17,6 +17,7 @@
 #include "core/value_excerpt.hpp"
 #include "fitting/builtin_models.hpp"
 #include "fitting/linear_fit.hpp"
+#include "fitting/nlopt_status.hpp"
 #include "fitting/polynomial_degree.hpp"
 #include "io/csv_table.hpp"
 
@@ -279,6 +280,12 @@ nlohmann::json to_json(const FitCommandOptions& o, const Points& p, const Outcom
                       {"residuals", vector_json(r.residuals)}};
   for (Eigen::Index i = 0; i < r.covariance.rows(); ++i)
     j["covariance"].push_back(vector_json(r.covariance.row(i).transpose()));
+  if (r.nlopt_code != 0)  // nonlinear fits: what NLopt did before the polish (docs/fitting.md)
+    j["nlopt"] = {{"algorithm", r.nlopt_algorithm},
+                  {"code", r.nlopt_code},
+                  {"status", fit::nlopt_code_name(r.nlopt_code)},
+                  {"fallback", r.nlopt_fallback},
+                  {"sse", nullable(r.nlopt_sse)}};
   if (oc.selection) {
     nlohmann::json scores = nlohmann::json::array();
     for (const auto& s : oc.selection->scores)

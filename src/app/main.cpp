@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/calibrate_command.hpp"
 #include "app/fit_command.hpp"
 #include "app/run_command.hpp"
 #include "app/section_command.hpp"
@@ -91,6 +92,23 @@ constexpr const char* kFitHelp =
     "  shellindent fit results/cap/static.csv --model power --x apex_deflection_mm --y force_N\n"
     "  shellindent fit c1.csv --model poly --x angle_deg --y C1 --degree auto\n"
     "  shellindent fit path.csv --model power-log --x depth_mm --y force_N --range 0.1:10";
+
+constexpr const char* kCalibrateHelp =
+    "Calibrate numbers of a case file against a measured force-travel curve: NLopt (LN_BOBYQA, "
+    "derivative-free; or LD_SLSQP with finite differences) adjusts the chosen case-file keys "
+    "(elastic constants of material, materials.NAME or indenter.material; "
+    "laminate.ply_thickness) within their bounds to minimise the squared force misfit at the "
+    "measured travels, each evaluation a full run of the case to the last measured travel. The "
+    "CSV names its units in the header (travel_mm,force_N or \"travel (mm), force (kN)\"); "
+    "travel is the indenter's travel after first touch. Prints a line per evaluation to stderr "
+    "and the optimum with standard errors, 95% intervals, correlations and identifiability "
+    "warnings to stdout; writes DIR/calibration.json, calibration_curve.csv and "
+    "calibrated_case.yaml. Ctrl-C or SIGTERM stops and reports the best point so far. Exit 1 "
+    "unless the "
+    "search converged. See docs/calibration.md.\n"
+    "Example:\n"
+    "  shellindent calibrate cap.yaml --data test.csv --param material.E3=5:20GPa "
+    "--param material.G13=1:6GPa:3GPa --out results/cal";
 
 // "commands:" and one line per subcommand: its description up to the first '.', ':' or ','.
 std::string command_list(const CLI::App& app) {
@@ -181,6 +199,47 @@ int run(int argc, char** argv) {
                       "fit only points with x in [a, b]: a:b, a: or :b (negative a: --range=-1:5)");
   fit_cmd->add_option("--json", fo.json_path, "JSON output (default: DATA.fit-MODEL.json)");
 
+  si::CalibrateCommandOptions co;
+  auto* calibrate_cmd = app.add_subcommand("calibrate", kCalibrateHelp);
+  calibrate_cmd->add_option("case", co.case_file, "YAML case file")
+      ->required()
+      ->check(CLI::ExistingFile);
+  calibrate_cmd->add_option("--data", co.data_file, "measured curve: CSV with units in the header")
+      ->required()
+      ->check(CLI::ExistingFile);
+  calibrate_cmd
+      ->add_option("--param", co.params,
+                   "KEY=LO:HI[:START] with units, e.g. material.E3=5GPa:20GPa or "
+                   "material.nu23=0.2:0.45:0.3 (repeat for each parameter; START default: the "
+                   "case's value)")
+      ->required()
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  calibrate_cmd->add_option("--x", co.x_column, "travel column (default: the first length column)");
+  calibrate_cmd->add_option("--y", co.y_column, "force column (default: the first force column)");
+  calibrate_cmd->add_option("--out", co.out_dir,
+                            "output directory (default: results/CASE_calibration)");
+  calibrate_cmd->add_option("--algorithm", co.algorithm, "bobyqa (derivative-free) or slsqp")
+      ->capture_default_str();
+  calibrate_cmd
+      ->add_option("--max-evaluations", co.max_evaluations,
+                   "model evaluations of the search (the Jacobian's 2p come on top)")
+      ->capture_default_str();
+  calibrate_cmd
+      ->add_option("--xtol", co.xtol,
+                   "stop when the search's steps are below this fraction of each parameter's range")
+      ->capture_default_str();
+  calibrate_cmd
+      ->add_option("--threads", co.threads, "assembly threads of each run (0: OpenMP's default)")
+      ->capture_default_str();
+  calibrate_cmd->add_flag("!--no-warm-start", co.warm_start,
+                          "run every evaluation's full path from first touch (default: each run "
+                          "starts from the nearest earlier run's converged states)");
+  calibrate_cmd
+      ->add_option("-j,--jobs", co.jobs,
+                   "runs at once for the Jacobian at the optimum (the search is sequential)")
+      ->capture_default_str();
+
   auto* materials = app.add_subcommand("materials", "List the built-in material library.");
 
   std::string notation;
@@ -216,6 +275,7 @@ int run(int argc, char** argv) {
   if (*run_cmd) return si::run_run_command(ro, std::cout, std::cerr);
   if (*sweep_cmd) return si::run_sweep_command(swo, std::cout, std::cerr);
   if (*fit_cmd) return si::run_fit_command(fo, std::cout, std::cerr);
+  if (*calibrate_cmd) return si::run_calibrate_command(co, std::cout, std::cerr);
   if (*materials) return si::run_materials_command(std::cout);
   if (*layup) return si::run_layup_command(notation, std::cout);
   return 2;

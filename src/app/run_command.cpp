@@ -18,6 +18,7 @@
 #include "io/case_digest.hpp"
 #include "io/case_file.hpp"
 #include "io/case_key_location.hpp"
+#include "io/damage_fields.hpp"
 #include "io/output_directory.hpp"
 #include "io/output_lock.hpp"
 #include "io/path_results.hpp"
@@ -28,9 +29,11 @@
 namespace si {
 namespace {
 
-// The VTU of one point: resultants plus the contact pressure and force at every node.
+// The VTU of one point: resultants plus the contact pressure and force at every node, and any
+// `extra` fields.
 void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& s,
-                     const IndentationState& st, const cont::Vector& z) {
+                     const IndentationState& st, const cont::Vector& z,
+                     const VtuFields& extra = {}) {
   const IndentationProblem& p = *s.problem;
   const std::vector<NodeState> state = p.node_states(z);
   VtuFields fields =
@@ -43,7 +46,45 @@ void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& 
   }
   fields.point_data["contact_pressure"] = pressure;
   fields.point_data["contact_force"] = force;
+  add_damage_fields(s, st, z, fields);
+  for (const auto& [name, values] : extra.point_data) fields.point_data[name] = values;
   write_vtu(file.string(), s.model.mesh, state, fields);
+}
+
+// A stability event's mode as a nodal field: the translations of the mode (its shell part, chart
+// coordinates), scaled so that the largest is 1 (a shape; its sign is Lanczos').
+Eigen::MatrixXd mode_translations(const IndentationProblem& p, const cont::Vector& mode,
+                                  int nodes) {
+  Eigen::MatrixXd u = Eigen::MatrixXd::Zero(nodes, 3);
+  for (int n = 0; n < nodes; ++n)
+    for (int l = 0; l < 3; ++l) {
+      const int eq = p.dofs().equation(DofMap::dof(n, l));
+      if (eq >= 0 && eq < mode.size()) u(n, l) = mode[eq];
+    }
+  const double largest = u.cwiseAbs().maxCoeff();
+  return largest > 0 ? Eigen::MatrixXd(u / largest) : u;
+}
+
+// One VTU per stability change (stability_NN.vtu, at the event's point, with its critical mode
+// as the point field `critical_mode`); returns the files' names. The problem may have grown its
+// candidate set since the event: the appended multipliers are zero at the event.
+std::vector<std::string> write_stability_vtus(const std::filesystem::path& dir, IndentationSetup& s,
+                                              const PathResult& r) {
+  std::vector<std::string> names;
+  IndentationProblem& p = *s.problem;
+  for (const cont::Event& e : r.events) {
+    if (e.type != cont::EventType::kStabilityChange || e.x.size() == 0 || e.x.size() > p.size())
+      continue;
+    cont::Vector z = cont::Vector::Zero(p.size());
+    z.head(e.x.size()) = e.x;
+    char name[32];
+    std::snprintf(name, sizeof name, "stability_%02d.vtu", static_cast<int>(names.size()) + 1);
+    VtuFields extra;
+    extra.point_data["critical_mode"] = mode_translations(p, e.mode, s.model.mesh.num_nodes());
+    write_point_vtu(dir / name, s, p.evaluate(z, e.p), z, extra);
+    names.push_back(name);
+  }
+  return names;
 }
 
 std::string pvd_text(const std::vector<std::pair<double, std::string>>& files) {
@@ -163,7 +204,8 @@ void check_same_case(const nlohmann::json& record, const CaseDigest& now, const 
 std::vector<std::string> write_path_files(const std::filesystem::path& dir,
                                           const OutputChoice& formats,
                                           const IndentationSetup& setup, const PathResult& r,
-                                          const std::vector<std::pair<double, std::string>>& vtus) {
+                                          const std::vector<std::pair<double, std::string>>& vtus,
+                                          const std::string& damage_rows) {
   const PathSpec& path = setup.spec.path;
   std::vector<std::string> written;
   const bool arclength = r.method == RunMethod::kPseudoArclength;
@@ -174,6 +216,11 @@ std::vector<std::string> write_path_files(const std::filesystem::path& dir,
       write_file_atomically((dir / "path_grid.csv").string(),
                             path_grid_csv(r, path.step, path.depth_max));
       written.push_back("path_grid.csv (interpolated at the depth steps)");
+    }
+    if (setup.damage) {
+      write_file_atomically((dir / "damage_points.csv").string(),
+                            damage_points_header(setup) + damage_rows);
+      written.push_back("damage_points.csv");
     }
   }
   if (formats.json) {
@@ -239,14 +286,19 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
       << setup.problem->num_shell_unknowns() << " shell unknowns, "
       << setup.problem->candidates().size() << " contact candidates, first touch at travel "
       << setup.problem->first_touch() << " mm\n";
+  if (cf.path.stability && setup.model.symmetry_factor > 1)
+    err << "note: path.stability on a symmetric part of the shell sees only the modes symmetric "
+           "about its planes (mesh.symmetry: full for all of them)\n";
 
   const OutputChoice formats = output_choice(cf.output);
   const CaseDigest digest = case_digest(text);
   Progress progress(err, cf.path.depth_max);
   std::vector<std::pair<double, std::string>> vtus;
+  std::string damage_rows;  // damage_points.csv's rows so far (saved with the checkpoints)
   InterruptGuard guard;
   const PathCallback on_point = [&](const PathPoint& p, const cont::Vector& z) {
     progress.show(p);
+    if (formats.csv) damage_rows += damage_points_rows(setup, p, z);
     const int every = cf.output.vtu_every;
     if (formats.vtu && every > 0 && p.index % every == 0) {
       write_point_vtu(dir / vtu_name(p.index), setup, p.state, z);
@@ -257,16 +309,23 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   control.save_record = [&] {
     nlohmann::json frames = nlohmann::json::array();
     for (const auto& [depth, name] : vtus) frames.push_back({depth, name});
-    return nlohmann::json{{"case", digest.to_json()}, {"vtu", frames}};
+    nlohmann::json record{{"case", digest.to_json()}, {"vtu", frames}};
+    if (setup.damage) record["damage_points"] = damage_rows;
+    return record;
   };
   control.restore_record = [&](const nlohmann::json& record) {
     check_same_case(record, digest, cf.file, text, control.checkpoint);
     vtus.clear();
     for (const auto& f : record.value("vtu", nlohmann::json::array()))
       vtus.emplace_back(f.at(0).get<double>(), f.at(1).get<std::string>());
+    damage_rows = record.value("damage_points", std::string());
   };
-  const PathResult r = run_indentation_path(setup, on_point, control);
+  PathResult r = run_indentation_path(setup, on_point, control);
   progress.done();
+  // The path's files say why it stopped in the user's terms (the callback is how a signal
+  // stops a continuation; "stopped by the callback" tells a user nothing).
+  if (r.status == RunStatus::kStopped && interrupted())
+    r.reason = std::string("interrupted (") + interrupt_name() + ")";
   // The last point always has its fields (vtu_every counts points: a 0-10 mm run's last VTU was
   // at 6.22 mm).
   if (formats.vtu && cf.output.vtu_every > 0 && !r.points.empty() &&
@@ -291,21 +350,27 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   for (const cont::Event& e : r.events)
     if (e.type != cont::EventType::kSignatureChange)
       out << "event: " << e.name << (e.monitor.empty() ? "" : " of " + e.monitor)
-          << (e.against.empty() ? "" : " against " + e.against) << " at depth " << e.p << " mm\n";
+          << (e.against.empty() ? "" : " against " + e.against)
+          << (e.type == cont::EventType::kStabilityChange
+                  ? " (" + cont::criticality_name(e.criticality) + ")"
+                  : "")
+          << " at depth " << e.p << " mm\n";
 
-  const std::vector<std::string> written = write_path_files(dir, formats, setup, r, vtus);
+  std::vector<std::string> written = write_path_files(dir, formats, setup, r, vtus, damage_rows);
+  if (formats.vtu) {
+    const std::vector<std::string> modes = write_stability_vtus(dir, setup, r);
+    if (!modes.empty())
+      written.push_back(std::to_string(modes.size()) + " stability VTU file(s) (critical_mode)");
+  }
   err << "wrote ";
   for (std::size_t i = 0; i < written.size(); ++i) err << (i ? ", " : "") << written[i];
   err << (written.empty() ? "nothing (output.formats)" : "") << "\n";
   if (r.completed) return 0;
-  // The status says the callback stopped the run; the signal that asked it to, what the user did.
-  const bool interrupt = r.status == RunStatus::kStopped && interrupted();
   err << "shellindent: error: the run stopped after " << r.points.size() << " converged point(s)"
       << (r.points.empty()
               ? ""
               : " at depth " + format_quantity(r.points.back().state.depth, Dimension::kLength))
-      << ": " << (interrupt ? std::string("interrupted (") + interrupt_name() + ")" : r.reason)
-      << "\n";
+      << ": " << r.reason << "\n";
   return 1;
 }
 

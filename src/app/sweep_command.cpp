@@ -7,8 +7,10 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -17,9 +19,13 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <sstream>
+#include <thread>
 
 #include "analysis/path_columns.hpp"
+#include "app/damage_summary.hpp"
+#include "app/interrupt_signals.hpp"
 #include "app/thread_count.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -120,22 +126,39 @@ class Scheduler {
             std::ostream& err)
       : cases_(cases), root_(root), jobs_(std::max(jobs, 1)), exe_(std::move(exe)), err_(err) {}
 
+  // Runs `todo`, `jobs_` at a time. On Ctrl-C or SIGTERM (InterruptGuard of the command) it
+  // starts nothing more and passes SIGTERM on to the running cases, which stop after their
+  // current point and write what converged; it waits for them, so the summary that follows
+  // holds their points. Polls (WNOHANG) because the handlers restart an interrupted waitpid.
   void run(const std::vector<size_t>& todo) {
     size_t next = 0;
-    while (next < todo.size() || !running_.empty()) {
-      while (next < todo.size() && static_cast<int>(running_.size()) < jobs_) {
+    bool forwarded = false;
+    while (true) {
+      while (!interrupted() && next < todo.size() && static_cast<int>(running_.size()) < jobs_) {
         const size_t i = todo[next++];
         running_[spawn_case(exe_, root_ / cases_[i].slug)] = Running{i, Clock::now()};
       }
+      if (interrupted() && !forwarded) {
+        forward_interrupt();
+        forwarded = true;
+      }
+      if (running_.empty()) break;
       int status = 0;
-      const pid_t pid = waitpid(-1, &status, 0);
+      const pid_t pid = waitpid(-1, &status, WNOHANG);
+      if (pid == 0 || (pid < 0 && errno == EINTR)) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        continue;
+      }
       if (pid < 0) break;
       const auto it = running_.find(pid);
       if (it == running_.end()) continue;
       report(it->second, status);
       running_.erase(it);
     }
+    for (; next < todo.size(); ++next) not_started_.insert(todo[next]);
   }
+  // Cases an interrupt kept from starting.
+  bool started(size_t i) const { return not_started_.count(i) == 0; }
   void report_skipped(size_t i) {
     ++done_;
     err_ << "sweep: " << done_ << "/" << cases_.size() << " " << cases_[i].label
@@ -143,6 +166,12 @@ class Scheduler {
   }
 
  private:
+  void forward_interrupt() {
+    err_ << "sweep: interrupted (" << interrupt_name() << "): starting no more cases; "
+         << running_.size() << " running case(s) stop after their current point" << std::endl;
+    for (const auto& [pid, r] : running_) kill(pid, SIGTERM);
+  }
+
   void report(const Running& r, int status) {
     ++done_;
     const double seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
@@ -162,6 +191,7 @@ class Scheduler {
   std::string exe_;
   std::ostream& err_;
   std::map<pid_t, Running> running_;
+  std::set<size_t> not_started_;
   int done_ = 0;
 };
 
@@ -273,6 +303,7 @@ json summarize(const StudyCase& c, const fs::path& dir, const StudyFile& study) 
     row[std::string("critical_") + k + "_depth_mm"] = at_depth;
     row[std::string("critical_") + k + "_force_N"] = at_force;
   }
+  summarize_damage(*path, row);
   if (study.has_fit) {
     const json grid = grid_points(dir);
     fit_contact_law(grid.empty() ? pts : grid, study.fit, c.case_file.path.step, row);
@@ -280,7 +311,17 @@ json summarize(const StudyCase& c, const fs::path& dir, const StudyFile& study) 
   return row;
 }
 
-std::vector<std::string> columns(const StudyFile& study) {
+// The row of a case an interrupt kept from starting; a rerun of the sweep runs it.
+json not_run(const StudyCase& c, const std::string& signal) {
+  json row;
+  row["case"] = c.index;
+  for (const auto& [key, value] : c.values) row[key] = value;
+  row["status"] = "not_run";
+  row["reason"] = "the sweep was interrupted (" + signal + ") before this case started";
+  return row;
+}
+
+std::vector<std::string> columns(const StudyFile& study, const std::vector<StudyCase>& cases) {
   std::vector<std::string> cols{"case"};
   for (const auto& kv : study.vary) cols.push_back(kv.first);
   for (const char* c :
@@ -288,6 +329,7 @@ std::vector<std::string> columns(const StudyFile& study) {
         "depth_at_max_force_mm", "energy_end_Nmm", "critical_k11_depth_mm", "critical_k11_force_N",
         "critical_k22_depth_mm", "critical_k22_force_N"})
     cols.push_back(c);
+  for (const std::string& c : damage_columns(cases)) cols.push_back(c);
   if (study.has_fit)
     for (const char* c : {"fit_status", "C1", "C1_lo", "C1_hi", "C2", "C2_lo", "C2_hi", "R2"})
       cols.push_back(c);
@@ -350,6 +392,7 @@ int run_sweep_command(const SweepCommandOptions& o, std::ostream& out, std::ostr
   err << "sweep: " << study.file << ": " << cases.size() << " case(s)"
       << (o.quick ? " (--quick)" : "") << ", " << o.jobs << " at once, in " << case_root.string()
       << "\n";
+  const InterruptGuard guard;  // Ctrl-C / SIGTERM: stop the cases, then summarise (Scheduler)
   Scheduler scheduler(cases, case_root, o.jobs, resolve_executable(o.executable), err);
   std::vector<size_t> todo;
   for (size_t i = 0; i < cases.size(); ++i) {
@@ -367,11 +410,12 @@ int run_sweep_command(const SweepCommandOptions& o, std::ostream& out, std::ostr
 
   json rows = json::array();
   int failed = 0;
-  for (const StudyCase& c : cases) {
-    rows.push_back(summarize(c, case_root / c.slug, study));
+  for (size_t i = 0; i < cases.size(); ++i) {
+    rows.push_back(scheduler.started(i) ? summarize(cases[i], case_root / cases[i].slug, study)
+                                        : not_run(cases[i], interrupt_name()));
     failed += finished(rows.back()["status"].get<std::string>()) ? 0 : 1;
   }
-  const std::vector<std::string> cols = columns(study);
+  const std::vector<std::string> cols = columns(study, cases);
   const std::string csv = sweep_csv(cols, rows);
   write_file_atomically((root / "sweep.csv").string(), csv);
   const json doc{{"study", study.file},
@@ -388,7 +432,10 @@ int run_sweep_command(const SweepCommandOptions& o, std::ostream& out, std::ostr
     err << "\n";
     return 0;
   }
-  err << "; " << failed << " of " << cases.size() << " case(s) failed\n";
+  err << "; " << failed << " of " << cases.size() << " case(s) "
+      << (interrupted() ? std::string("not finished: interrupted (") + interrupt_name() + ")"
+                        : std::string("failed"))
+      << "\n";
   return 1;
 }
 

@@ -1,6 +1,7 @@
 #include "indentation/contact_jacobian_solver.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.hpp"
 
@@ -159,10 +160,12 @@ void ContactJacobianSolver::factor_fallback() {
 
 void ContactJacobianSolver::factorize(const SparseMatrix& J, int num_shell,
                                       const std::vector<ShellChart::RotationBlock>& rotations,
-                                      const std::vector<ContactJacobianRow>& rows) {
+                                      const std::vector<ContactJacobianRow>& rows, int border) {
+  SI_REQUIRE(border == 0 || border == 1, "contact Jacobian: the border is 0 or 1 unknown");
   SI_REQUIRE(J.isCompressed() && J.rows() == J.cols() &&
-                 J.rows() == num_shell + static_cast<int>(rows.size()),
+                 J.rows() == num_shell + static_cast<int>(rows.size()) + border,
              "contact Jacobian: size does not match the shell and contact rows");
+  border_ = border;
   if (num_shell != num_shell_) analyze_shell(J, num_shell);
   const bool same_pattern =
       static_cast<int>(analyzed_outer_.size()) == J.outerSize() + 1 &&
@@ -198,7 +201,29 @@ void ContactJacobianSolver::factorize(const SparseMatrix& J, int num_shell,
   ++preconditioner_age_;
   const bool stale = !has_preconditioner_ || last_products_ > kRefreshProducts ||
                      preconditioner_age_ > kMaxPreconditionerAge;
-  if (stale && !refresh_preconditioner()) factor_fallback();
+  if (stale && !refresh_preconditioner()) {
+    factor_fallback();
+    return;
+  }
+  if (border_ && !prepare_border()) factor_fallback();
+}
+
+bool ContactJacobianSolver::prepare_border() {
+  const int n = static_cast<int>(J_->rows()) - 1;
+  border_column_ = Eigen::VectorXd::Zero(n);
+  border_row_ = Eigen::VectorXd::Zero(n);
+  border_corner_ = 0;
+  for (int c = 0; c <= n; ++c)
+    for (SparseMatrix::InnerIterator it(*J_, c); it; ++it) {
+      if (c == n && it.row() < n) border_column_[it.row()] = it.value();
+      if (c < n && it.row() == n) border_row_[c] = it.value();
+      if (c == n && it.row() == n) border_corner_ = it.value();
+    }
+  apply_condensed(border_column_, border_solution_);
+  const double coupling = border_row_.dot(border_solution_);
+  border_pivot_ = border_corner_ - coupling;
+  return std::isfinite(border_pivot_) &&
+         std::abs(border_pivot_) > 1e-12 * (std::abs(border_corner_) + std::abs(coupling));
 }
 
 void ContactJacobianSolver::forget_preconditioner() {
@@ -212,6 +237,20 @@ void ContactJacobianSolver::forget_preconditioner() {
 
 void ContactJacobianSolver::apply_preconditioner(const Eigen::VectorXd& in,
                                                  Eigen::VectorXd& out) const {
+  if (!border_) {
+    apply_condensed(in, out);
+    return;
+  }
+  const Eigen::Index n = in.size() - 1;
+  Eigen::VectorXd inner;
+  apply_condensed(in.head(n), inner);
+  const double ya = (in[n] - border_row_.dot(inner)) / border_pivot_;
+  out.resize(in.size());
+  out.head(n) = inner - border_solution_ * ya;
+  out[n] = ya;
+}
+
+void ContactJacobianSolver::apply_condensed(const Eigen::VectorXd& in, Eigen::VectorXd& out) const {
   const int nf = num_shell_;
   Eigen::VectorXd r = in.head(nf);
   transpose_transform(pre_rotations_, r);
@@ -248,6 +287,7 @@ Eigen::VectorXd ContactJacobianSolver::solve(const Eigen::VectorXd& rhs) {
     last_products_ = r.iterations;
     if (r.converged && x.allFinite()) return x;
     if (preconditioner_age_ == 0 || !refresh_preconditioner()) break;
+    if (border_ && !prepare_border()) break;
   }
   if (!use_lu_) factor_fallback();
   return lu_->solve(rhs);

@@ -14,6 +14,12 @@
 // converge, the solve falls back to an LU of J (the `fallback` solver, UMFPACK by default).
 // Candidates appended to the set (same shell block) keep the factor: their rows enter the
 // preconditioner uncondensed until the next refresh.
+// A border (one trailing unknown whose row and column couple the contact rows, the power-law
+// local contact's approach alpha, power_law_approach.hpp) stays in J for GMRES; the
+// preconditioner eliminates it by block elimination through the condensed factor P,
+//     y_a = (r_a - d^T P^-1 r) / (e - d^T P^-1 c),   y = P^-1 r - (P^-1 c) y_a,
+// (Golub & Van Loan 2013, 4.6; c, d, e the border's column, row and corner), which costs one
+// more application of P per linearisation instead of a second Krylov solve.
 #pragma once
 
 #include <array>
@@ -53,11 +59,11 @@ class ContactJacobianSolver {
   ~ContactJacobianSolver();
 
   // J: the full Jacobian (num_shell shell rows/columns first, then one row/column per row of
-  // `rows`, in order), its pattern fixed until the next call. Throws a numerical si::Error if
-  // neither route can factor it (singular J).
+  // `rows`, in order, then `border` (0 or 1) bordering unknowns), its pattern fixed until the
+  // next call. Throws a numerical si::Error if neither route can factor it (singular J).
   void factorize(const SparseMatrix& J, int num_shell,
                  const std::vector<ShellChart::RotationBlock>& rotations,
-                 const std::vector<ContactJacobianRow>& rows);
+                 const std::vector<ContactJacobianRow>& rows, int border = 0);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
 
   const ContactJacobianCounters& counters() const { return counters_; }
@@ -75,6 +81,11 @@ class ContactJacobianSolver {
   void map_jacobian(const SparseMatrix& J);
   bool refresh_preconditioner();
   void apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
+  // P^-1 on the shell and contact rows (in and out without the border).
+  void apply_condensed(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
+  // The border's c, d, e from J, and P^-1 c and the pivot e - d^T P^-1 c with the current P;
+  // false if the pivot vanishes.
+  bool prepare_border();
   void factor_fallback();
   // T^T v on the rotation pairs of v's first num_shell entries (in place).
   static void transpose_transform(const std::vector<ShellChart::RotationBlock>& rotations,
@@ -95,6 +106,9 @@ class ContactJacobianSolver {
   std::unique_ptr<LinearSolver> cholesky_;
   std::unique_ptr<LinearSolver> lu_;
   bool use_lu_ = false;  // this factorize() went to the fallback LU
+  int border_ = 0;
+  Eigen::VectorXd border_column_, border_row_, border_solution_;  // c, d, P^-1 c
+  double border_corner_ = 0, border_pivot_ = 0;                   // e, e - d^T P^-1 c
   // The current linearisation (T blocks, rows with G~ and the floored a) and the one the
   // Cholesky factor was made from (the preconditioner is reused while GMRES converges fast).
   std::vector<ShellChart::RotationBlock> rotations_, pre_rotations_;

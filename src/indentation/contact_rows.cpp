@@ -117,16 +117,23 @@ void ContactRows::signature(const TermPoint& p, std::vector<int>& out) const {
   }
 }
 
-void ContactRows::active_gradients(const TermPoint& p, Triplets& out, int& next) const {
+void ContactRows::active_gradients(const TermPoint& p, Triplets& out,
+                                   std::vector<int>& multiplier_index) const {
+  // Strongly active: active in the signature and pressing (lambda_i > 0 beyond the roundoff of
+  // the largest, as contact_nodes counts them). A weakly active node (lambda_i = 0 = g_i) stays
+  // free, which makes positive definiteness a sufficient condition (continuation.md 12).
   std::vector<int> active;
   signature(p, active);
+  const cont::Vector lambda = multipliers(p.z);
+  const double lambda_max = lambda.size() ? lambda.cwiseAbs().maxCoeff() : 0.0;
   std::vector<std::pair<int, double>> entries;
   for (int i = 0; i < size(); ++i) {
-    if (!active[i]) continue;
+    if (!active[i] || !(lambda[i] > 1e-9 * lambda_max && lambda[i] > 0)) continue;
     entries.clear();
     gradient(i, p, entries);
-    for (const auto& [column, value] : entries) out.emplace_back(next, column, value);
-    ++next;
+    const int row = static_cast<int>(multiplier_index.size());
+    for (const auto& [column, value] : entries) out.emplace_back(row, column, value);
+    multiplier_index.push_back(first() + i);
   }
 }
 

@@ -51,7 +51,8 @@ class ContactRows : public ContactTerm {
   void residual(const TermPoint& p, cont::Vector& F) override;
   void residual_p(const TermPoint& p, cont::Vector& out) override;
   void signature(const TermPoint& p, std::vector<int>& out) const override;
-  void active_gradients(const TermPoint& p, Triplets& out, int& next) const override;
+  void active_gradients(const TermPoint& p, Triplets& out,
+                        std::vector<int>& multiplier_index) const override;
   bool adapt(const TermPoint& p) override;
   // Force (T_N, whole shell), nodes in contact, their area and the contact radius.
   void quantities(const TermPoint& p, IndentationState& out) const override;
@@ -64,6 +65,8 @@ class ContactRows : public ContactTerm {
   virtual SparseMatrix gap_matrix(const TermPoint& reference) const = 0;
   Eigen::VectorXd reference_gaps(const TermPoint& reference) const;
   Eigen::VectorXd layer_compliances() const;
+  // lambda_i over this is candidate i's contact pressure, MPa (the state's `pressures`).
+  double pressure_area_of(int i) const { return pressure_area(i); }
 
  protected:
   // Value slots in J of candidate i's entries on its node's equations (-1 where prescribed).

@@ -66,13 +66,19 @@ class ContactTerm {
   // Whether its rows can join the Krylov solver's condensed preconditioner (rows on one node's
   // dofs, no coupling to other rows); otherwise the problem uses a direct LU.
   virtual bool condensable() const { return false; }
+  // Whether its one unknown, whose row and column couple every contact row (a power law's
+  // alpha), may instead border the Krylov solver's matrix: GMRES keeps it and the preconditioner
+  // eliminates it by block elimination (contact_jacobian_solver.hpp). Such a term comes last in z.
+  virtual bool borders() const { return false; }
 
   // Its active constraints appended to the problem's signature (1 active, 0 not).
   virtual void signature(const TermPoint&, std::vector<int>&) const {}
   // The gradients, with respect to the shell's free dofs (spatial increments, before the chart),
-  // of its active constraints, one row each from row `next` on (the tangent restricted to the
-  // active constraints, for stability: issue 15).
-  virtual void active_gradients(const TermPoint&, Triplets&, int& /*next*/) const {}
+  // of its strongly active constraints, one row each from row multiplier_index.size() on, and for
+  // each row the index in z of its multiplier appended to `multiplier_index` (the tangent
+  // restricted to the active constraints, for stability: docs/theory/continuation.md 12).
+  virtual void active_gradients(const TermPoint&, Triplets&,
+                                std::vector<int>& /*multiplier_index*/) const {}
   // Drops what one solve hands the next (e.g. Newton guesses), so that a resumed run, which starts
   // without them, repeats the uninterrupted one bit for bit (cont::Problem::reset_solver_caches).
   virtual void reset_caches() {}

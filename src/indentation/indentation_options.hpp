@@ -18,8 +18,9 @@ struct IndentationOptions {
   // Fischer-Burmeister on the feasible quadrant, min outside (ncp_function.hpp); kMin for the
   // active-set cross-check.
   NcpFunction ncp = NcpFunction::kFischerBurmeisterMin;
-  // The interpolated traction's rows span several nodes and a power-law local contact adds
-  // the unknown alpha: those use the direct LU (UMFPACK unless klu is asked for).
+  // The interpolated traction's rows span several nodes: it uses the direct LU (UMFPACK unless
+  // klu is asked for). A power-law local contact's unknown alpha borders the Krylov solver's
+  // matrix (contact_jacobian_solver.hpp).
   JacobianSolverKind linear_solver = JacobianSolverKind::kPreconditionedKrylov;
   // kPreconditionedKrylov: GMRES stops at a relative residual of krylov_tolerance. The Newton
   // corrections need no more than 1e-6: an inexact Newton method with a constant forcing term

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -32,8 +33,14 @@ IndentationProblem::IndentationProblem(const ShellModel& model, const Indenter& 
   parts_ = make_contact_parts(
       options_, ContactRowsSetting{shell_, body_, kappa_, options_.ncp, options_.candidate_depth});
   contact_ = parts_.indenter;
-  const bool condensable = std::all_of(parts_.terms.begin(), parts_.terms.end(),
-                                       [](const auto& t) { return t->condensable(); });
+  // Bordering terms come last (contact_term.hpp); the Krylov solver takes one bordering unknown.
+  for (const auto& t : parts_.terms)
+    if (t->borders()) border_ += t->size();
+  SI_REQUIRE(parts_.terms.back()->borders() || border_ == 0,
+             "indentation: a bordering contact term must be the last");
+  const bool condensable =
+      border_ <= 1 && std::all_of(parts_.terms.begin(), parts_.terms.end(),
+                                  [](const auto& t) { return t->condensable() || t->borders(); });
   solver_ =
       make_jacobian_solver(options_.linear_solver, condensable, kappa_, options_.krylov_tolerance);
   lay_out();
@@ -150,7 +157,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   const std::vector<ShellChart::RotationBlock> rotations =
       shell_.to_chart(z.head(nf), r_free, jacobian_);
   try {
-    solver_->factorize(jacobian_, nf, rotations, rows);
+    solver_->factorize(jacobian_, nf, rotations, rows, border_);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
@@ -178,12 +185,16 @@ double IndentationProblem::force_scale(const cont::Vector& z) const {
 }
 
 double IndentationProblem::inner(const cont::Vector& a, const cont::Vector& b) const {
-  const int nf = shell_.size(), local = layout().local;
-  const Eigen::Index nc = a.size() - nf - local;
+  // By the layout, not by counting from the end: the multipliers sit between x and alpha.
+  const UnknownLayout u = layout();
+  const int lambda = u.lambda_begin(), nc = u.multipliers;
   // alpha (mm) counts as one more shell coordinate.
-  double shell = (a.head(nf).dot(b.head(nf)) + a.tail(local).dot(b.tail(local))) / nf;
-  if (nc > 0) shell += a.tail(nc).dot(b.tail(nc)) / (static_cast<double>(nc) * kappa_ * kappa_);
-  return shell;
+  double sum = (a.head(u.shell).dot(b.head(u.shell)) + a.tail(u.local).dot(b.tail(u.local))) /
+               static_cast<double>(u.shell + u.local);
+  if (nc > 0)
+    sum += a.segment(lambda, nc).dot(b.segment(lambda, nc)) /
+           (static_cast<double>(nc) * kappa_ * kappa_);
+  return sum;
 }
 
 std::vector<std::string> IndentationProblem::monitor_names() const {
@@ -199,6 +210,28 @@ void IndentationProblem::quantities(const cont::Vector& z, const std::vector<Nod
   out.apex_curvature = shell_.curvature(s, apex);
   const TermPoint p{z, h, s};
   for (const auto& t : parts_.terms) t->quantities(p, out);
+  probe(z, s, out);
+}
+
+void IndentationProblem::probe(const cont::Vector& z, const std::vector<NodeState>& s,
+                               IndentationState& out) const {
+  if (!probe_) return;
+  const int first = contact_->first();
+  const int given = std::min(static_cast<int>(z.size()) - first - layout().local, contact_->size());
+  Eigen::VectorXd pressures = Eigen::VectorXd::Zero(contact_->size());
+  for (int i = 0; i < given; ++i) pressures[i] = z[first + i] / contact_->pressure_area_of(i);
+  probe_->measure(ProbePoint{s, contact_->candidates(), pressures}, out);
+}
+
+void IndentationProblem::set_probe(std::shared_ptr<const StateProbe> probe) {
+  probe_ = std::move(probe);
+  cached_state_.reset();
+}
+
+IndentationState IndentationProblem::probe_at(const cont::Vector& z) const {
+  IndentationState out;
+  probe(z, shell_.states(z.head(shell_.size())), out);
+  return out;
 }
 
 cont::Vector IndentationProblem::monitors(const cont::Vector& z, double h) {
@@ -221,15 +254,16 @@ std::vector<int> IndentationProblem::signature(const cont::Vector& z, double h) 
   return active;
 }
 
-SparseMatrix IndentationProblem::active_constraint_gradients(const cont::Vector& z,
-                                                             double h) const {
+SparseMatrix IndentationProblem::active_constraint_gradients(
+    const cont::Vector& z, double h, std::vector<int>* multiplier_index) const {
   const std::vector<NodeState> s = node_states(z);
   const TermPoint p{z, h, s};
   Triplets t;
-  int rows = 0;
+  std::vector<int> rows;
   for (const auto& term : parts_.terms) term->active_gradients(p, t, rows);
-  SparseMatrix G(rows, shell_.size());
+  SparseMatrix G(static_cast<Eigen::Index>(rows.size()), shell_.size());
   G.setFromTriplets(t.begin(), t.end());
+  if (multiplier_index) *multiplier_index = std::move(rows);
   return G;
 }
 

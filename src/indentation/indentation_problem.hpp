@@ -10,7 +10,8 @@
 //    of the indenter's contact, with nodal gaps (nodal_gaps.hpp) or the paper's weighted gaps
 //    and interpolated traction (weighted_gaps.hpp), and a local law: a power law's approach alpha
 //    (power_law_approach.hpp) or a thin layer (thin_layer.hpp). contact_terms.cpp chooses them;
-//  * the Jacobian's solver, chosen once (jacobian_solver.hpp).
+//  * the Jacobian's solver, chosen once (jacobian_solver.hpp); a power law's alpha borders the
+//    Krylov solver's matrix.
 // Unknowns z = [x ; the terms' unknowns, in order] (today [x ; lambda ; alpha]); the Jacobian is
 // exact (generalised, at the kinks of the NCP function):
 //     [ K - sum lambda_i dG_i    -G ]      then, for nonlinear kinematics, the chart transform
@@ -31,6 +32,7 @@
 #include "indentation/indentation_options.hpp"
 #include "indentation/jacobian_solver.hpp"
 #include "indentation/shell_part.hpp"
+#include "indentation/state_probe.hpp"
 
 namespace si {
 
@@ -58,9 +60,10 @@ class IndentationProblem : public cont::Problem {
   bool factorize(const cont::Vector& z, double h) override;
   bool solve(cont::Vector& b) override;
   bool residual_p(const cont::Vector& z, double h, cont::Vector& out) override;
-  // Arclength metric: mean square of the shell coordinates (mm, rad; alpha counts as one more)
-  // plus the mean square of the multipliers over kappa (mm), so that with parameter weight 1 an
-  // arclength step is about a depth step (each shell point moves at most as much as the indenter).
+  // Arclength metric: mean square of the shell coordinates (mm, rad; a power law's alpha counts
+  // as one more) plus the mean square of the indenter's multipliers over kappa (mm), so that with
+  // parameter weight 1 an arclength step is about a depth step (each shell point moves at most as
+  // much as the indenter).
   double inner(const cont::Vector& a, const cont::Vector& b) const override;
   std::vector<std::string> monitor_names() const override;
   // The monitors need no assembly (the continuation evaluates them off the branch too).
@@ -71,10 +74,29 @@ class IndentationProblem : public cont::Problem {
   // terms' Newton guesses, the evaluate() cache): a resumed run, which starts without them, then
   // goes on bit for bit as the uninterrupted one.
   void reset_solver_caches() override;
-  // The gradients of the active contact constraints with respect to the shell's free dofs (one
-  // row per active constraint; spatial increments, before the chart transform), for the tangent
-  // restricted to them.
-  SparseMatrix active_constraint_gradients(const cont::Vector& z, double h) const;
+  // The gradients of the strongly active contact constraints with respect to the shell's free
+  // dofs (one row per active constraint; spatial increments, before the chart transform), for
+  // the tangent restricted to them; `multiplier_index` (if given) gets each row's multiplier in z.
+  SparseMatrix active_constraint_gradients(const cont::Vector& z, double h,
+                                           std::vector<int>* multiplier_index = nullptr) const;
+
+  // Stability of a converged point (indentation_stability.cpp; docs/theory/continuation.md 12):
+  // the Hessian of the Lagrangian in the shell's chart coordinates restricted to the strongly
+  // active contact constraints. Provided without a local contact law (whose approach alpha and
+  // compliant rows are not a constraint on the shell alone).
+  bool provides_stability() const override;
+  bool stability(const cont::Vector& z, double h, int modes, cont::Stability& out) override;
+  // What stability() analyses: H (shell chart coordinates, symmetric, both triangles), the
+  // active constraint rows A in the same coordinates, each row's multiplier in z, and the
+  // relative asymmetry |H0 - H0'|_F / |H0|_F of T' J_xx before its symmetric part H was taken
+  // (the Newton residual's order at a converged point).
+  struct StabilityMatrices {
+    SparseMatrix H;
+    SparseMatrix A;
+    std::vector<int> multipliers;
+    double asymmetry = 0;
+  };
+  StabilityMatrices stability_matrices(const cont::Vector& z, double h);
 
   // The starting point: undeformed, no contact force (a solution at h = 0).
   cont::Vector initial_point() const;
@@ -103,6 +125,14 @@ class IndentationProblem : public cont::Problem {
   // nonlinear: the fast path refuses it (run_indentation_path routes it to the continuation).
   Eigen::VectorXd layer_compliances() const;
   IndentationState evaluate(const cont::Vector& z, double h);
+  // What else the state carries from the displacement field (the failure indices of a run that
+  // monitors damage, analysis/damage_probe.hpp), from now on; none by default. Set it before the
+  // path starts: the monitors read it.
+  void set_probe(std::shared_ptr<const StateProbe> probe);
+  // The probe's part of the state (set_probe; nothing without one) at unknowns
+  // z of this run, also of an earlier point whose candidate set was smaller (an event found
+  // before the set grew: the candidates are appended, so z's multipliers are the set's head).
+  IndentationState probe_at(const cont::Vector& z) const;
   const ShellModel& model() const { return model_; }
   IndentationCounters counters() const;
   // The preconditioned Krylov solver's work (zero with a direct LU).
@@ -119,6 +149,8 @@ class IndentationProblem : public cont::Problem {
   // The quantities of the monitors (no gaps, no assembly).
   void quantities(const cont::Vector& z, const std::vector<NodeState>& s, double h,
                   IndentationState& out) const;
+  // The probe's part at node states s; z's multiplier block may be the head of today's.
+  void probe(const cont::Vector& z, const std::vector<NodeState>& s, IndentationState& out) const;
 
   const ShellModel& model_;
   IndentationOptions options_;
@@ -127,7 +159,9 @@ class IndentationProblem : public cont::Problem {
   double kappa_ = 1;  // N/mm
   ContactParts parts_;
   ContactRows* contact_ = nullptr;  // the indenter's contact rows (in parts_)
+  int border_ = 0;                  // bordering unknowns at the end of z (ContactTerm::borders)
   std::unique_ptr<JacobianSolver> solver_;
+  std::shared_ptr<const StateProbe> probe_;
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
   IndentationCounters counters_;

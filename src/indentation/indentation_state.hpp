@@ -2,10 +2,12 @@
 // wants, the quantities a continuation monitors, and the work counters.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
 #include "core/linalg.hpp"
+#include "damage/monitored_failure.hpp"
 
 namespace si {
 
@@ -36,6 +38,9 @@ struct IndentationState {
   std::vector<double> gaps;         // g per candidate, mm
   std::vector<double> pressures;    // lambda / tributary area per candidate, MPa (interpolated
                                     // traction: lambda / w = t-bar, the nodal traction)
+  // The largest failure index of each criterion (by Criterion) over the monitored points, where
+  // the run monitors damage (IndentationOptions::probe; index NaN otherwise).
+  std::array<MonitoredFailure, kCriteria> failure;
 };
 
 // Work done so far, for benchmarks and the run summary.

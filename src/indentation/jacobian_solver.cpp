@@ -11,7 +11,7 @@ class DirectJacobianSolver final : public JacobianSolver {
   void pattern_changed() override { lu_ = make_linear_solver(kind_); }
   void reset() override { pattern_changed(); }
   void factorize(const SparseMatrix& J, int, const std::vector<ShellChart::RotationBlock>&,
-                 const std::vector<ContactJacobianRow>&) override {
+                 const std::vector<ContactJacobianRow>&, int) override {
     lu_->factorize(J);  // the first factorization analyses the pattern
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override { return lu_->solve(rhs); }
@@ -30,8 +30,8 @@ class KrylovJacobianSolver final : public JacobianSolver {
   void reset() override { solver_.forget_preconditioner(); }
   void factorize(const SparseMatrix& J, int num_shell,
                  const std::vector<ShellChart::RotationBlock>& rotations,
-                 const std::vector<ContactJacobianRow>& rows) override {
-    solver_.factorize(J, num_shell, rotations, rows);
+                 const std::vector<ContactJacobianRow>& rows, int border) override {
+    solver_.factorize(J, num_shell, rotations, rows, border);
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override { return solver_.solve(rhs); }
   ContactJacobianCounters counters() const override { return solver_.counters(); }

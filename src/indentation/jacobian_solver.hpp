@@ -1,9 +1,9 @@
 // The linear solver of the indentation problem's Jacobian, chosen once per problem: GMRES
 // preconditioned by a Cholesky factorization of the condensed shell block
 // (contact_jacobian_solver.hpp), which needs every contact row condensable (rows on one node's
-// dofs: the nodal gaps, with or without a thin layer), or a direct sparse LU of the whole
-// Jacobian (unsymmetric: UMFPACK or KLU), which takes anything (weighted gaps, a power law's
-// alpha).
+// dofs: the nodal gaps, with or without a thin layer) or a border (a power law's alpha), or a
+// direct sparse LU of the whole Jacobian (unsymmetric: UMFPACK or KLU), which takes anything
+// (weighted gaps).
 #pragma once
 
 #include <memory>
@@ -31,17 +31,18 @@ class JacobianSolver {
   // new solver's, bit for bit (cont::Problem::reset_solver_caches).
   virtual void reset() = 0;
   // J: the num_shell shell rows and columns first, then the terms' (in `rows` for a Krylov
-  // solver). Throws a numerical si::Error if J cannot be factored.
+  // solver), the last `border` of them bordering unknowns (ContactTerm::borders). Throws a
+  // numerical si::Error if J cannot be factored.
   virtual void factorize(const SparseMatrix& J, int num_shell,
                          const std::vector<ShellChart::RotationBlock>& rotations,
-                         const std::vector<ContactJacobianRow>& rows) = 0;
+                         const std::vector<ContactJacobianRow>& rows, int border) = 0;
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) = 0;
   // The Krylov solver's work (zero for a direct LU).
   virtual ContactJacobianCounters counters() const { return {}; }
 };
 
-// condensable: whether every part of the problem has condensable rows. kappa: the problem's
-// stiffness scale (N/mm); krylov_tolerance: GMRES's relative residual.
+// condensable: whether every part of the problem has condensable rows or borders. kappa: the
+// problem's stiffness scale (N/mm); krylov_tolerance: GMRES's relative residual.
 std::unique_ptr<JacobianSolver> make_jacobian_solver(JacobianSolverKind kind, bool condensable,
                                                      double kappa, double krylov_tolerance);
 

@@ -35,7 +35,9 @@ PowerLawApproach::PowerLawApproach(const LocalContactLaw& law, const ContactBody
 }
 
 DentValue PowerLawApproach::dent(int node, const cont::Vector& z) const {
-  return law_.dent(dent_radius_[node], z[first()]);
+  const double alpha = z[first()];
+  if (!dent_profile_ || dent_profile_->alpha != alpha) dent_profile_ = law_.dent_profile(alpha);
+  return dent_profile_->at(dent_radius_[node]);
 }
 
 void PowerLawApproach::add_pattern(Triplets& t) const {

@@ -14,6 +14,7 @@
 // the dent through the LocalApproach interface. Nonlinear: the linear fast path refuses it.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "contact/local_contact_law.hpp"
@@ -40,14 +41,18 @@ class PowerLawApproach final : public ContactTerm, public LocalApproach {
   DentValue dent(int node, const cont::Vector& z) const override;
   int alpha_index() const override { return first(); }
   bool regularizes_touch() const override { return true; }
+  bool borders() const override { return true; }
 
  private:
   LocalContactLaw law_;
   const ContactRows& rows_;
   double symmetry_factor_;
   std::vector<double> dent_radius_;  // per mesh node: r of the dent profile, mm
-  std::vector<int> row_slots_;       // (alpha, multiplier i)
-  int diagonal_ = -1;                // (alpha, alpha)
+  // The dent at the last alpha: every candidate's gap at an iterate shares it (a finite-thickness
+  // law's contact radius and table slice are found once per alpha).
+  mutable std::optional<DentProfile> dent_profile_;
+  std::vector<int> row_slots_;  // (alpha, multiplier i)
+  int diagonal_ = -1;           // (alpha, alpha)
 };
 
 }  // namespace si

@@ -9,6 +9,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "core/units.hpp"
+#include "io/damage_reader.hpp"
 #include "io/laminate_reader.hpp"
 #include "io/material_reader.hpp"
 #include "io/named_sets_reader.hpp"
@@ -225,10 +226,19 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics,
   ContactSpec contact;
   const auto map = section(top, "contact");
   if (!map) return contact;
-  map->allow_only({"surface", "solver", "local", "traction", "fbar"});
+  map->allow_only(
+      {"surface", "solver", "local", "local_support", "local_plies", "traction", "fbar"});
   contact.surface = map->choice_or("surface", kSurfaces, contact.surface);
   contact.solver = map->choice_or("solver", kSolvers, contact.solver);
   contact.local = map->choice_or("local", local_contact_spellings(), contact.local);
+  contact.local_support =
+      map->choice_or("local_support", local_support_spellings(), contact.local_support);
+  contact.local_plies = map->choice_or("local_plies", local_plies_spellings(), contact.local_plies);
+  for (const char* key : {"local_support", "local_plies"})
+    if (map->has(key) && contact.local != LocalContactModel::kAnisotropic)
+      throw_input(std::string("`") + key + "` chooses how `local: anisotropic` is built; set " +
+                      "`local: anisotropic` or remove it",
+                  map->where(key));
   contact.traction = map->choice_or("traction", kTractions, contact.traction);
   contact.fbar = map->choice_or("fbar", kBooleans, contact.fbar);
   if (contact.traction == ContactTraction::kInterpolated && kinematics != Kinematics::kLinear)
@@ -246,14 +256,15 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics,
   // gaps the apex row, closed at first touch, supplies it, but the weighted gaps are all open
   // there and the Jacobian is singular (measured on studies/paper_option_cap.yaml).
   if (contact.traction == ContactTraction::kInterpolated &&
-      (contact.local == LocalContactModel::kHertz || contact.local == LocalContactModel::kYangSun))
+      (contact.local == LocalContactModel::kHertz || contact.local == LocalContactModel::kYangSun ||
+       contact.local == LocalContactModel::kAnisotropic))
     throw_input(
-        "a power-law local contact (hertz, yang_sun) is not available with the interpolated "
-        "traction; use `traction: nodal` or `local: none | vam`",
+        "a Hertz-type local contact (hertz, yang_sun, anisotropic) is not available with the "
+        "interpolated traction; use `traction: nodal` or `local: none | vam`",
         map->where("local"));
   // Hertz's dent profile (contact/hertz_dent.hpp) is defined for a sphere only.
-  if ((contact.local == LocalContactModel::kHertz ||
-       contact.local == LocalContactModel::kYangSun) &&
+  if ((contact.local == LocalContactModel::kHertz || contact.local == LocalContactModel::kYangSun ||
+       contact.local == LocalContactModel::kAnisotropic) &&
       indenter.shape != IndenterShape::kSphere)
     throw_input("a Hertz-type local law needs a spherical indenter", map->where("local"));
   return contact;
@@ -279,11 +290,13 @@ std::vector<double> read_depths(const MapReader& map, double depth_max) {
   return depths;
 }
 
-PathSpec read_path(const MapReader& top) {
+// A local contact law's approach and compliant rows are no constraint on the shell alone: the
+// restricted tangent (docs/theory/continuation.md 12) is defined without one.
+PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
   PathSpec path;
   const auto map = section(top, "path");
   if (!map) return path;
-  map->allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths"});
+  map->allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths", "stability"});
   path.method = map->choice_or("method", kMethods, path.method);
   path.depth_max = map->positive_or("depth_max", Dimension::kLength, path.depth_max);
   path.step = map->positive_or("step", Dimension::kLength, path.step);
@@ -307,6 +320,12 @@ PathSpec read_path(const MapReader& top) {
                     format_quantity(path.step_max, Dimension::kLength) + "]",
                 map->where("step"));
   if (map->has("depths")) path.depths = read_depths(*map, path.depth_max);
+  path.stability = map->choice_or("stability", kBooleans, path.stability);
+  if (path.stability && contact.local != LocalContactModel::kNone)
+    throw_input(
+        "the stability of a point is defined without a local contact law (its approach is no "
+        "constraint on the shell); set `contact.local: none` or `stability: false`",
+        map->where("stability"));
   return path;
 }
 
@@ -439,7 +458,7 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   if (root.IsNull()) throw_input("the case file is empty", Where{file_label, "", "", 0});
   const MapReader top(root, Where{file_label, "", "", 0});
   top.allow_only({"material", "materials", "laminate", "shell", "mesh", "kinematics", "indenter",
-                  "contact", "path", "output", "load", "loads", "supports", "static"});
+                  "contact", "path", "output", "load", "loads", "supports", "static", "damage"});
   top.at("laminate");  // say it is missing before reading the rest
   const MaterialTable materials = read_materials(top);
   const Kinematics kinematics =
@@ -450,15 +469,17 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   MeshSpec mesh = read_mesh(top, shell.type);
   IndenterSpec indenter = read_indenter(top);
   ContactSpec contact = read_contact(top, kinematics, indenter);
-  PathSpec path = read_path(top);
+  PathSpec path = read_path(top, contact);
   OutputSpec output = read_output(top);
   std::optional<LoadSpec> load = read_load(top);
   StaticSettings static_run = read_static(top);
+  std::optional<DamageSpec> damage = read_damage(top, laminate);
   return CaseFile{{{std::move(laminate), std::move(shell), std::move(mesh), kinematics,
                     std::move(load), file_label},
                    std::move(indenter),
                    contact,
-                   std::move(path)},
+                   std::move(path),
+                   std::move(damage)},
                   materials.default_material,
                   std::move(output),
                   std::move(static_run)};

@@ -1,9 +1,11 @@
 #include "io/path_results.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "analysis/path_columns.hpp"
+#include "io/damage_json.hpp"
 #include "io/spellings.hpp"
 
 namespace si {
@@ -34,9 +36,10 @@ double monitor_value(const Eigen::VectorXd& values, const std::vector<std::strin
 // (dU/dh = T_N at equilibrium); the contact radius and area step from node to node, and the
 // counts and residuals are no functions to interpolate: those stay linear.
 std::vector<double> interpolate(const PathPoint& a, const PathPoint& b, double d,
-                                const std::vector<std::string>& monitors) {
+                                const std::vector<std::string>& monitors,
+                                const std::vector<PathColumn>& ids) {
   const double d0 = a.state.depth, dd = b.state.depth - d0, t = (d - d0) / dd;
-  const std::vector<double> va = path_point_values(a), vb = path_point_values(b);
+  const std::vector<double> va = path_point_values(a, ids), vb = path_point_values(b, ids);
   std::vector<double> out(va.size());
   for (std::size_t c = 0; c < va.size(); ++c) out[c] = (1 - t) * va[c] + t * vb[c];
   const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t);
@@ -47,9 +50,13 @@ std::vector<double> interpolate(const PathPoint& a, const PathPoint& b, double d
   };
   const std::size_t force = static_cast<std::size_t>(PathColumn::kForce);
   const std::size_t local = static_cast<std::size_t>(PathColumn::kLocalEnergy);
-  const std::vector<ColumnSpec>& columns = path_columns();
+  std::vector<ColumnSpec> columns;
+  for (PathColumn id : ids) columns.push_back(path_column(id));
   for (std::size_t c = 0; c < columns.size(); ++c) switch (columns[c].grid) {
       case GridInterpolation::kLinear:
+        break;
+      case GridInterpolation::kMinimum:
+        out[c] = std::min(va[c], vb[c]);
         break;
       case GridInterpolation::kHermite:
         hermite(c, monitor_value(a.depth_slopes, monitors, columns[c].name),
@@ -81,18 +88,19 @@ const char* run_status_name(RunStatus status) {
   return names[static_cast<int>(status)];
 }
 
-std::string path_csv_header() {
+std::string path_csv_header(const std::vector<PathColumn>& columns) {
   std::string h;
-  for (const ColumnSpec& c : path_columns()) h += (h.empty() ? "" : ",") + std::string(c.name);
+  for (PathColumn c : columns) h += (h.empty() ? "" : ",") + std::string(column_name(c));
   return h;
 }
 
 std::string path_csv(const PathResult& result) {
   std::ostringstream os;
   os.precision(12);
-  os << path_csv_header() << '\n';
+  os << path_csv_header(result_columns(result)) << '\n';
+  const std::vector<PathColumn> columns = result_columns(result);
   for (const PathPoint& p : result.points) {
-    const std::vector<double> v = path_point_values(p);
+    const std::vector<double> v = path_point_values(p, columns);
     for (std::size_t i = 0; i < v.size(); ++i) os << (i ? "," : "") << v[i];
     os << '\n';
   }
@@ -102,7 +110,8 @@ std::string path_csv(const PathResult& result) {
 std::string path_grid_csv(const PathResult& result, double dh, double depth_max) {
   std::ostringstream os;
   os.precision(12);
-  os << path_csv_header() << ",interpolated\n";
+  os << path_csv_header(result_columns(result)) << ",interpolated\n";
+  const std::vector<PathColumn> columns = result_columns(result);
   const auto& pts = result.points;
   const int n = static_cast<int>(std::floor(depth_max / dh + 1e-9));
   for (int k = 0; k <= n; ++k) {
@@ -110,14 +119,15 @@ std::string path_grid_csv(const PathResult& result, double dh, double depth_max)
     for (std::size_t i = 0; i < pts.size(); ++i) {
       const double d0 = pts[i].state.depth;
       if (std::abs(d0 - d) <= 1e-9 * (1 + d)) {  // a converged point
-        for (double v : path_point_values(pts[i])) os << v << ',';
+        for (double v : path_point_values(pts[i], columns)) os << v << ',';
         os << "0\n";
         break;
       }
       if (i + 1 == pts.size()) break;
       const double d1 = pts[i + 1].state.depth;
       if ((d - d0) * (d - d1) < 0) {  // inside this segment: first passage
-        for (double v : interpolate(pts[i], pts[i + 1], d, result.monitor_names)) os << v << ',';
+        for (double v : interpolate(pts[i], pts[i + 1], d, result.monitor_names, columns))
+          os << v << ',';
         os << "1\n";
         break;
       }
@@ -128,7 +138,8 @@ std::string path_grid_csv(const PathResult& result, double dh, double depth_max)
 
 nlohmann::json events_json(const PathResult& result) {
   nlohmann::json events = nlohmann::json::array();
-  for (const cont::Event& e : result.events) {
+  for (std::size_t i = 0; i < result.events.size(); ++i) {
+    const cont::Event& e = result.events[i];
     const auto at = [&](const char* name) {  // 0 for a monitor the event lacks
       const double v = monitor_value(e.monitors, result.monitor_names, name);
       return std::isnan(v) ? 0.0 : v;
@@ -143,19 +154,40 @@ nlohmann::json events_json(const PathResult& result) {
                       {"step", e.step},
                       {"located", e.located},
                       {"accuracy", e.accuracy}});
+    nlohmann::json& event = events.back();
+    if (e.type == cont::EventType::kStabilityChange) {
+      // What changed and how (docs/theory/continuation.md 10); the mode is the event's VTU field.
+      event["criticality"] = cont::criticality_name(e.criticality);
+      event["negative_before"] = e.negative_before;
+      event["negative_after"] = e.negative_after;
+      event["eigenvalue"] =
+          std::isfinite(e.eigenvalue) ? nlohmann::json(e.eigenvalue) : nlohmann::json(nullptr);
+      event["tangent_depth"] = e.tangent_p;
+    }
+    for (const DamageOnset& o : result.damage.onsets)  // where and what the damage is
+      if (o.event == static_cast<int>(i)) event.update(onset_json(o));
   }
   return events;
 }
 
 namespace {
 
-// contact.local and its constant (docs/theory/local-indentation.md).
+// contact.local and its constants (docs/theory/local-indentation.md).
 nlohmann::json local_contact_json(const IndentationSetup& setup) {
   const LocalContactLaw& law = setup.problem->local_law();
-  nlohmann::json j = {{"law", spelling(local_contact_spellings(), setup.spec.contact.local)}};
+  const ContactSpec& contact = setup.spec.contact;
+  nlohmann::json j = {{"law", spelling(local_contact_spellings(), contact.local)}};
   if (law.kind == LocalLawKind::kPowerLaw) {
-    j["k_N_per_mm1.5"] = law.k;
+    j["k_N_per_mm1.5"] = law.k;        // finite thickness: its Hertz form at small alpha
     j["dent_radius_mm"] = law.radius;  // hertz_dent.hpp; 0: uniform approach
+  }
+  if (contact.local == LocalContactModel::kAnisotropic) {
+    j["support"] = spelling(local_support_spellings(), contact.local_support);
+    j["plies"] = spelling(local_plies_spellings(), contact.local_plies);
+  }
+  if (law.layer) {
+    j["modulus_MPa"] = law.layer->modulus();
+    j["layer_thickness_mm"] = law.layer->thickness();
   }
   if (law.kind == LocalLawKind::kThinLayer) j["c_L_mm_per_MPa"] = law.compliance;
   return j;
@@ -168,33 +200,37 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
   nlohmann::json points = nlohmann::json::array();
   for (const PathPoint& p : result.points) {
     nlohmann::json row;
-    for (const ColumnSpec& c : path_columns()) row[c.name] = column_value(c, p);
+    for (PathColumn id : result_columns(result))
+      row[column_name(id)] = column_value(path_column(id), p);
     points.push_back(row);
   }
-  return {{"case", setup.spec.file},
-          {"method", run_method_name(result.method)},
-          {"element", m.element->name()},
-          {"kinematics", spelling(kinematics_spellings(), m.kinematics)},
-          {"nodes", m.mesh.num_nodes()},
-          {"elements", m.mesh.num_elements()},
-          {"shell_unknowns", setup.problem->num_shell_unknowns()},
-          {"contact_candidates", setup.problem->candidates().size()},
-          {"symmetry_factor", m.symmetry_factor},
-          {"first_touch_travel_mm", setup.problem->first_touch()},
-          {"local_contact", local_contact_json(setup)},
-          {"note",
-           "whole-shell values (a quarter model's forces, areas and energies times 4); depth = "
-           "indenter travel after first touch; force along the direction of travel"},
-          {"work",
-           {{"residuals", setup.problem->counters().residuals},
-            {"factorizations", setup.problem->counters().factorizations},
-            {"solves", setup.problem->counters().solves},
-            {"evaluations", setup.problem->counters().evaluations}}},
-          {"status", run_status_name(result.status)},
-          {"completed", result.completed},
-          {"reason", result.reason},
-          {"points", points},
-          {"events", events_json(result)}};
+  nlohmann::json j = {
+      {"case", setup.spec.file},
+      {"method", run_method_name(result.method)},
+      {"element", m.element->name()},
+      {"kinematics", spelling(kinematics_spellings(), m.kinematics)},
+      {"nodes", m.mesh.num_nodes()},
+      {"elements", m.mesh.num_elements()},
+      {"shell_unknowns", setup.problem->num_shell_unknowns()},
+      {"contact_candidates", setup.problem->candidates().size()},
+      {"symmetry_factor", m.symmetry_factor},
+      {"first_touch_travel_mm", setup.problem->first_touch()},
+      {"local_contact", local_contact_json(setup)},
+      {"note",
+       "whole-shell values (a quarter model's forces, areas and energies times 4); depth = "
+       "indenter travel after first touch; force along the direction of travel"},
+      {"work",
+       {{"residuals", setup.problem->counters().residuals},
+        {"factorizations", setup.problem->counters().factorizations},
+        {"solves", setup.problem->counters().solves},
+        {"evaluations", setup.problem->counters().evaluations}}},
+      {"status", run_status_name(result.status)},
+      {"completed", result.completed},
+      {"reason", result.reason},
+      {"points", points},
+      {"events", events_json(result)}};
+  if (setup.spec.damage) j["damage"] = damage_json(setup, result);
+  return j;
 }
 
 }  // namespace si

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "analysis/indentation_run.hpp"
+#include "analysis/path_columns.hpp"
 
 namespace si {
 
@@ -25,8 +26,9 @@ namespace si {
 const char* run_method_name(RunMethod method);
 const char* run_status_name(RunStatus status);
 
-// The header line of path.csv (without newline).
-std::string path_csv_header();
+// The header line of path.csv (without newline) of a run with these columns (run_columns,
+// result_columns; the default: a run without damage or stability output).
+std::string path_csv_header(const std::vector<PathColumn>& columns = base_columns());
 std::string path_csv(const PathResult& result);
 std::string path_grid_csv(const PathResult& result, double dh, double depth_max);
 nlohmann::json events_json(const PathResult& result);

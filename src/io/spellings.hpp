@@ -6,13 +6,28 @@
 #include <string>
 
 #include "analysis/contact_spec.hpp"
+#include "analysis/damage_spec.hpp"
+#include "damage/impact_energy.hpp"
+#include "damage/through_thickness_failure.hpp"
 #include "io/yaml_reader.hpp"
 #include "shell/kinematics.hpp"
 
 namespace si {
 
-const Choices<LocalContactModel>& local_contact_spellings();  // none, hertz, yang_sun, vam
-const Choices<Kinematics>& kinematics_spellings();            // linear, nonlinear
+// none, hertz, yang_sun, vam, anisotropic
+const Choices<LocalContactModel>& local_contact_spellings();
+// local: anisotropic's support (half_space, bonded, frictionless, plate) and plies (homogenised,
+// resolved)
+const Choices<LocalSupport>& local_support_spellings();
+const Choices<LocalPlies>& local_plies_spellings();
+const Choices<Kinematics>& kinematics_spellings();  // linear, nonlinear
+// Damage onset (docs/case-file.md `damage`, docs/results.md).
+const Choices<Criterion>& criterion_spellings();      // max_stress, tsai_wu, hashin, delamination
+const Choices<StressRecovery>& recovery_spellings();  // first_order, refined
+const Choices<EffectiveBendingStiffness>& bending_stiffness_spellings();  // olsson, geometric_mean
+const Choices<FailureMode>& failure_mode_spellings();      // fibre_tension, ..., delamination
+const Choices<PlyPosition>& ply_position_spellings();      // bottom, middle, top
+const Choices<EnergyOutcome>& energy_outcome_spellings();  // reached, beyond_path
 
 // The spelling of `value` in `choices` (the first, if several spell it).
 template <class E>

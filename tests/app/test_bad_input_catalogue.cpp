@@ -103,6 +103,27 @@ std::vector<BadInput> case_file_rows() {
               {"case.yaml:3", "meshh", "did you mean 'mesh'"}),
       run_row("KeyGivenTwice", kHead + "kinematics: linear\nkinematics: nonlinear\n",
               {"case.yaml:4", "kinematics", "key given twice"}),
+      // Issue 16: damage onset. A criterion whose strengths a ply's material lacks (steel has
+      // none), a negative strength, a threshold without G_IIc (t300-914c has no toughness), a
+      // negative impact energy: refused when read, naming the material, key and criterion.
+      run_row(
+          "DamageCriterionWithoutStrengths",
+          "material: steel\nlaminate: {layup: \"[0/90]S\", ply_thickness: 0.475 mm}\n"
+          "damage:\n  criteria: [max_stress, hashin]\n",
+          {"case.yaml:4", "damage.criteria[0]", "material 'steel' has no X_T", "maximum stress"}),
+      run_row("DamageNegativeStrength",
+              "material: {type: isotropic, E: 70 GPa, nu: 0.3, strengths: {X_T: -300 MPa}}\n"
+              "laminate: {layup: \"[0/90]S\", ply_thickness: 0.475 mm}\n"
+              "damage: {criteria: [hashin]}\n",
+              {"case.yaml:1", "X_T", "-300 MPa"}),
+      run_row("DamageThresholdWithoutToughness",
+              "material: t300-914c\nlaminate: {layup: \"[0/90]S\", ply_thickness: 0.475 mm}\n"
+              "damage: {threshold: {stiffness: olsson}}\n",
+              {"case.yaml:3", "damage.threshold", "has no G_IIc"}),
+      run_row("DamageNegativeImpactEnergy", kHead + "damage: {impact_energies: [1 J, -2 J]}\n",
+              {"case.yaml:3", "damage.impact_energies[1]", "-2 J", "must be > 0"}),
+      run_row("DamageUnknownCriterion", kHead + "damage: {criteria: [hashn]}\n",
+              {"case.yaml:3", "damage.criteria[0]", "hashn"}),
       run_row("UnknownLibraryMaterial",
               "material: steell\nlaminate: {layup: \"[0]\", ply_thickness: 1 mm}\n",
               {"case.yaml:1", "material", "did you mean 'steel'"}),
@@ -306,6 +327,12 @@ std::vector<BadInput> case_file_rows() {
               {"case.yaml:3", "path.depths[1]", "increase strictly"}),
       run_row("DepthBeyondDepthMax", kHead + "path: {depth_max: 1 mm, depths: [2 mm]}\n",
               {"case.yaml:3", "path.depths[0]", "(0, depth_max"}),
+      // Issue 15: the stability of the points.
+      run_row("StabilityNotABoolean", kHead + "path: {stability: yes please}\n",
+              {"case.yaml:3", "path.stability", "unknown value"}),
+      run_row("StabilityWithALocalLaw",
+              kHead + "contact: {local: hertz}\npath: {stability: true}\n",
+              {"case.yaml:4", "path.stability", "contact.local: none"}),
       run_row("VtuEveryNegative", kHead + "output: {vtu_every: -1}\n",
               {"case.yaml:3", "output.vtu_every", ">= 0"}),
       run_row("VtuEveryNotWhole", kHead + "output: {vtu_every: 1.5}\n",

@@ -121,6 +121,26 @@ bool wait_for_file(const fs::path& file, double seconds) {
   return true;
 }
 
+// A background `run` of small_case() in the fresh directory `name`, under way once its VTU
+// `frame` exists (`started` false, with the log, if it never did within a minute).
+struct BackgroundRun {
+  fs::path dir, case_file, out, log;
+  Spawned process;
+  bool started = false;
+};
+
+BackgroundRun start_run(const std::string& name, const char* frame, const char* log = "run.log") {
+  BackgroundRun r;
+  r.dir = fresh_dir(name);
+  r.case_file = testing::write_case(r.dir, small_case());
+  r.out = r.dir / "out";
+  r.log = r.dir / log;
+  r.process =
+      spawn({"run", r.case_file.string(), "--threads", "1", "--out", r.out.string()}, r.log);
+  r.started = wait_for_file(r.out / frame, 60);
+  return r;
+}
+
 // Items 17 and 21: the last point has its VTU although vtu_every does not divide its index,
 // and a run that reached depth_max says so in the path's terms.
 TEST(RunInterrupts, UninterruptedRunWritesTheLastFrameAndSaysItReachedDepthMax) {
@@ -147,15 +167,12 @@ TEST(RunInterrupts, UninterruptedRunWritesTheLastFrameAndSaysItReachedDepthMax) 
 // uninterrupted run's, and path.pvd lists the frames from before and after the stop.
 TEST(RunInterrupts, SigtermWritesEveryPointAndTheResumeIsBitIdentical) {
   const fs::path& reference = reference_run();
-  const fs::path dir = fresh_dir("interrupt_sigterm");
-  const fs::path c = testing::write_case(dir, small_case());
-  const fs::path out = dir / "out";
-  const Spawned run =
-      spawn({"run", c.string(), "--threads", "1", "--out", out.string()}, dir / "run.log");
-  ASSERT_TRUE(wait_for_file(out / "path_0003.vtu", 60)) << read_file(dir / "run.log");
-  kill(run.pid, SIGTERM);
-  const int code = wait_for(run);
-  const std::string log = read_file(dir / "run.log");
+  const BackgroundRun run = start_run("interrupt_sigterm", "path_0003.vtu");
+  ASSERT_TRUE(run.started) << read_file(run.log);
+  const fs::path& out = run.out;
+  kill(run.process.pid, SIGTERM);
+  const int code = wait_for(run.process);
+  const std::string log = read_file(run.log);
   if (code == 0) GTEST_SKIP() << "the run ended before the signal arrived:\n" << log;
   EXPECT_EQ(code, 1) << log;
   EXPECT_TRUE(contains(log, "interrupted (SIGTERM)")) << log;
@@ -163,8 +180,9 @@ TEST(RunInterrupts, SigtermWritesEveryPointAndTheResumeIsBitIdentical) {
   EXPECT_GE(stopped.at("points").size(), 4u);  // every converged point, path_0003.vtu's included
   EXPECT_TRUE(fs::exists(out / "path.csv"));
   EXPECT_TRUE(fs::exists(out / "events.json"));
+  EXPECT_EQ(stopped.at("reason"), "interrupted (SIGTERM)");  // not "stopped by the callback"
 
-  const auto resumed = run_cli(run_args(c, out) + " --resume");
+  const auto resumed = run_cli(run_args(run.case_file, out) + " --resume");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   for (const char* file : {"path.csv", "path_grid.csv", "path.pvd"})
     EXPECT_EQ(read_file(out / file), read_file(reference / file)) << file << " differs";
@@ -254,20 +272,77 @@ TEST(RunInterrupts, KillAtAnyInstantLeavesAResumableStateOrNothingToResume) {
 
 // Item 14: a second run into a directory that a running one is writing is refused at once.
 TEST(RunInterrupts, SecondRunIntoTheSameDirectoryIsRefused) {
-  const fs::path dir = fresh_dir("interrupt_lock");
-  const fs::path c = testing::write_case(dir, small_case());
-  const fs::path out = dir / "out";
-  const Spawned first =
-      spawn({"run", c.string(), "--threads", "1", "--out", out.string()}, dir / "first.log");
-  ASSERT_TRUE(wait_for_file(out / "path_0000.vtu", 60)) << read_file(dir / "first.log");
-  const auto second = run_cli(run_args(c, out));
-  const int first_code = wait_for(first);
-  EXPECT_EQ(first_code, 0) << read_file(dir / "first.log");
+  const BackgroundRun first = start_run("interrupt_lock", "path_0000.vtu", "first.log");
+  ASSERT_TRUE(first.started) << read_file(first.log);
+  const fs::path& out = first.out;
+  const auto second = run_cli(run_args(first.case_file, out));
+  const int first_code = wait_for(first.process);
+  EXPECT_EQ(first_code, 0) << read_file(first.log);
   if (!contains(second.output, "another shellindent run") && second.exit_code == 0)
     GTEST_SKIP() << "the first run ended before the second started";
   EXPECT_EQ(second.exit_code, 2) << second.output;
   EXPECT_TRUE(contains(second.output, "--out")) << second.output;
   EXPECT_EQ(read_file(out / "path.csv"), read_file(reference_run() / "path.csv"));
+}
+
+// Item 11 for a sweep: SIGTERM (or Ctrl-C) to `shellindent sweep` starts no more cases, passes
+// the signal on to the running case, which stops after its point and writes what converged, and
+// the sweep then writes its summary, the cases it did not start marked not_run, and exits 1. A
+// rerun finishes the study.
+TEST(RunInterrupts, SigtermToASweepStopsItsCasesAndSummarisesWhatRan) {
+  const fs::path dir = fresh_dir("interrupt_sweep");
+  const fs::path base = testing::write_case(dir, small_case());
+  const fs::path study = dir / "study.yaml";
+  std::ofstream(study) << "base: " << base.string() << "\n"
+                       << "vary: {laminate.layup: [\"[0/0]2S\", \"[0/90]2S\", \"[90/0]2S\"]}\n";
+  const fs::path out = dir / "out";
+  const Spawned sweep =
+      spawn({"sweep", study.string(), "-j", "1", "--out", out.string()}, dir / "sweep.log");
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  fs::path first_case;
+  while (first_case.empty() && std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(out / "cases", ec))
+      if (fs::exists(e.path() / "path_0003.vtu")) first_case = e.path();
+  }
+  ASSERT_FALSE(first_case.empty()) << read_file(dir / "sweep.log");
+  kill(sweep.pid, SIGTERM);
+  const int code = wait_for(sweep);
+  const std::string log = read_file(dir / "sweep.log");
+  EXPECT_EQ(code, 1) << log;
+  EXPECT_TRUE(contains(log, "interrupted (SIGTERM)")) << log;
+  // The running case stopped after its point with everything that converged written (or had
+  // just finished); the sweep waited for it.
+  const nlohmann::json path = nlohmann::json::parse(read_file(first_case / "path.json"));
+  EXPECT_GE(path.at("points").size(), 4u);
+  if (path.at("status") != "reached_bound") {
+    EXPECT_EQ(path.at("reason"), "interrupted (SIGTERM)") << path.dump(1);
+  }
+  const nlohmann::json summary = nlohmann::json::parse(read_file(out / "sweep.json"));
+  ASSERT_EQ(summary.at("cases").size(), 3u);
+  int not_run = 0;
+  for (const auto& row : summary.at("cases")) not_run += row.at("status") == "not_run" ? 1 : 0;
+  EXPECT_GE(not_run, 1) << summary.dump(1);
+  EXPECT_TRUE(fs::exists(out / "sweep.csv"));
+
+  const auto rerun = run_cli("sweep '" + study.string() + "' -j 1 --out '" + out.string() + "'");
+  EXPECT_EQ(rerun.exit_code, 0) << rerun.output;
+}
+
+// The same request delivered twice within a second (a scheduler signals every process of the
+// job, and a sweep forwards the signal to its cases) stops the run gracefully, once.
+TEST(RunInterrupts, RepeatedSigtermWithinASecondIsOneRequest) {
+  const BackgroundRun run = start_run("interrupt_twice", "path_0003.vtu");
+  ASSERT_TRUE(run.started) << read_file(run.log);
+  kill(run.process.pid, SIGTERM);
+  kill(run.process.pid, SIGTERM);
+  const int code = wait_for(run.process);
+  const std::string log = read_file(run.log);
+  if (code == 0) GTEST_SKIP() << "the run ended before the signal arrived:\n" << log;
+  EXPECT_EQ(code, 1) << log;  // not -SIGTERM: the second delivery did not end it at once
+  EXPECT_TRUE(contains(log, "interrupted (SIGTERM)")) << log;
+  EXPECT_TRUE(fs::exists(run.out / "path.json"));
 }
 
 }  // namespace

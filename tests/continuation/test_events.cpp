@@ -160,3 +160,36 @@ TEST(ContEvents, SignatureChangeUnlocatedWhenNotAsked) {
 
 }  // namespace
 }  // namespace si::cont
+
+namespace si::cont {
+namespace {
+
+// A level crossing is the zero crossing of m - level: y = p^3 - 3p = 1 at p = 2 cos(theta),
+// cos(3 theta) = 1/2, i.e. theta = pi/9, 5 pi/9, 7 pi/9 (ascending p: 7, 5, 1). It must not
+// report y's zeros.
+TEST(ContEvents, LevelCrossingLocatedAtTheLevel) {
+  for (Method method : {Method::kNatural, Method::kPseudoArclength}) {
+    Settings s = event_settings(method);
+    s.zero_crossing_monitors.clear();
+    s.extremum_monitors.clear();
+    s.inflections.clear();
+    s.level_crossings = {{"y", 1.0}};
+    CubicWithAbscissa problem;
+    const Vector x0 = Vector::Constant(1, test::CubicBranchProblem::branch(-2.4));
+    const Branch b = method == Method::kNatural ? natural(problem, x0, -2.4, s)
+                                                : pseudo_arclength(problem, x0, -2.4, s);
+    const auto crossings = test::events_of(b, EventType::kZeroCrossing);
+    ASSERT_EQ(crossings.size(), 3u);
+    const double pi = std::acos(-1.0);
+    const double expected[] = {2 * std::cos(7 * pi / 9), 2 * std::cos(5 * pi / 9),
+                               2 * std::cos(pi / 9)};
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_TRUE(crossings[i].located);
+      EXPECT_NEAR(crossings[i].p, expected[i], 1e-9);
+      EXPECT_EQ(crossings[i].monitor, "y");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace si::cont

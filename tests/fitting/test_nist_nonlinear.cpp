@@ -4,12 +4,15 @@
 // to the same 6 digits (they follow from the parameters and the Jacobian at the solution).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "../verification_record.hpp"
 #include "fitting/builtin_models.hpp"
 #include "fitting/curve_model.hpp"
+#include "fitting/nlopt_status.hpp"
 #include "fitting/nonlinear_fit.hpp"
 #include "fitting_test_support.hpp"
 
@@ -131,6 +134,100 @@ TEST(NistNonlinear, DanWood_BuiltinPowerLaw) {
     if (start > 0) s.start = start == 1 ? p.start1 : p.start2;
     expect_certified(p, fit_curve(power_law(), p.x, p.y, s),
                      "DanWood start " + std::to_string(start));
+  }
+}
+
+// Issue 18: NLopt itself finds the optimum. On every set, from both of NIST's starts, with the
+// analytic and the finite-difference Jacobian: the gradient stage (LD_SLSQP) ends with a success
+// code, no derivative-free fallback runs, and NLopt's own result - before the Levenberg-Marquardt
+// polish - already agrees with the certified values to 6 digits. The polished result is checked
+// as well (both are reported; docs/fitting.md's table is these lines).
+struct NloptCase {
+  std::string file;
+  CurveModel (*model)();
+};
+
+class NistNlopt : public ::testing::TestWithParam<NloptCase> {};
+
+double min_digits(const Eigen::VectorXd& c, const StrdProblem& p) {
+  double d = 16.0;
+  for (Eigen::Index j = 0; j < p.certified.size(); ++j)
+    d = std::min(d, agreeing_digits(c[j], p.certified[j]));
+  return d;
+}
+
+TEST_P(NistNlopt, GradientStageFindsTheOptimumWithoutFailureCode) {
+  const StrdProblem p = read_strd(GetParam().file);
+  for (const bool analytic : {true, false}) {
+    CurveModel model = GetParam().model();
+    if (!analytic) model.gradient = nullptr;
+    for (int start = 1; start <= 2; ++start) {
+      FitSettings s;
+      s.start = start == 1 ? p.start1 : p.start2;
+      const FitResult r = fit(curve_problem(model, p.x, p.y), s);
+      const std::string what = GetParam().file + " start " + std::to_string(start) +
+                               (analytic ? " analytic" : " finite differences");
+      const double nlopt_digits = min_digits(r.nlopt_parameters, p);
+      const double polished_digits = min_digits(r.parameters, p);
+      std::printf(
+          "[nist] %s: %s code %d (%s), %d residual evaluations; digits NLopt %.1f, "
+          "polished %.1f\n",
+          what.c_str(), r.nlopt_algorithm.c_str(), r.nlopt_code,
+          nlopt_code_name(r.nlopt_code).c_str(), r.evaluations.residuals, nlopt_digits,
+          polished_digits);
+      EXPECT_GT(r.nlopt_code, 0) << what << ": " << r.reason;
+      EXPECT_FALSE(r.nlopt_fallback) << what << ": " << r.reason;
+      EXPECT_EQ(r.nlopt_algorithm, "LD_SLSQP") << what;
+      EXPECT_GE(nlopt_digits, kDigits) << what << ": NLopt alone";
+      EXPECT_GE(polished_digits, kDigits) << what << ": polished";
+      if (analytic)
+        for (Eigen::Index j = 0; j < p.certified.size(); ++j)
+          si::test::record_verification("nist-strd", what + " " + p.names[j] + ", NLopt alone",
+                                        p.certified[j], r.nlopt_parameters[j],
+                                        std::pow(10.0, -kDigits),
+                                        "NIST StRD certified values (11 digits)");
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Strd, NistNlopt,
+                         ::testing::Values(NloptCase{"misra1a.txt", misra1a},
+                                           NloptCase{"chwirut2.txt", chwirut2},
+                                           NloptCase{"thurber.txt", thurber},
+                                           NloptCase{"danwood.txt", power_law}),
+                         [](const ::testing::TestParamInfo<NloptCase>& c) {
+                           return c.param.file.substr(0, c.param.file.find('.'));
+                         });
+
+// The derivative-free algorithm on its own (LN_BOBYQA, no polish): never a failure code, and the
+// certified values to 6 digits except from Thurber's start 1, where 7 parameters of a rational
+// function are beyond BOBYQA's 5000 evaluations (it stops with MAXEVAL_REACHED, reported as
+// "stalled" - not a failure code, not a solution either).
+TEST(NistNonlinear, DerivativeFreeAloneNeverReturnsAFailureCode) {
+  const NloptCase sets[] = {{"misra1a.txt", misra1a},
+                            {"chwirut2.txt", chwirut2},
+                            {"thurber.txt", thurber},
+                            {"danwood.txt", power_law}};
+  for (const NloptCase& set : sets) {
+    const StrdProblem p = read_strd(set.file);
+    for (int start = 1; start <= 2; ++start) {
+      FitSettings s;
+      s.start = start == 1 ? p.start1 : p.start2;
+      s.method = Method::kDerivativeFree;
+      s.polish_iterations = 0;
+      const FitResult r = fit(curve_problem(set.model(), p.x, p.y), s);
+      const std::string what = set.file + " start " + std::to_string(start);
+      const double digits = min_digits(r.nlopt_parameters, p);
+      std::printf("[nist] %s: LN_BOBYQA code %d (%s), %d evaluations, digits %.1f\n", what.c_str(),
+                  r.nlopt_code, nlopt_code_name(r.nlopt_code).c_str(), r.evaluations.residuals,
+                  digits);
+      EXPECT_GT(r.nlopt_code, 0) << what << ": " << r.reason;
+      EXPECT_EQ(r.nlopt_algorithm, "LN_BOBYQA");
+      if (set.file == "thurber.txt" && start == 1)
+        EXPECT_EQ(r.nlopt_code, nlopt::MAXEVAL_REACHED) << what;
+      else
+        EXPECT_GE(digits, kDigits) << what;
+    }
   }
 }
 

@@ -102,6 +102,29 @@ TEST(ContactJacobianSolver, ExactStructureSolvesInTwoProducts) {
   EXPECT_LE(solver.counters().krylov_products, 2);
 }
 
+// A border (the local approach alpha of a power-law local contact: its column d_b kappa u' in the
+// contact rows, its row the symmetry factor on the multipliers, its corner -dF/dalpha) stays in
+// J; the preconditioner eliminates it through the factor, so the solve is still J's own and
+// takes as few products as without the border.
+TEST(ContactJacobianSolver, BorderedByTheLocalApproach_SolvesTheBorderedMatrix) {
+  const Synthetic s = make_synthetic();
+  const Eigen::MatrixXd inner = Eigen::MatrixXd(s.jacobian());
+  const int n = static_cast<int>(inner.rows());
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  J.topLeftCorner(n, n) = inner;
+  for (int i = kShell; i < n; ++i) {
+    J(i, n) = s.rows[i - kShell].b * (0.3 + 0.2 * (i - kShell));  // b u'
+    J(n, i) = 4.0;                                                // the symmetry factor
+  }
+  J(n, n) = -35.0;  // -dF/dalpha
+  const SparseMatrix Js = J.sparseView();
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
+  solver.factorize(Js, kShell, s.rotations, s.rows, 1);
+  expect_matches_dense_lu(solver, Js);
+  EXPECT_EQ(solver.counters().lu_fallbacks, 0);
+  EXPECT_LE(solver.counters().krylov_products, 3);
+}
+
 // A drilling term and a stale factor (a new linearisation with the same pattern) cost GMRES
 // products, not accuracy: the products are with the exact J.
 TEST(ContactJacobianSolver, DrillingTermAndStaleFactorStayExact) {

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "analysis/indentation_run.hpp"
+#include "contact/anisotropic_local_law.hpp"
 #include "indentation/active_set_solver.hpp"
 #include "indentation/linear_indentation.hpp"
 
@@ -171,13 +172,16 @@ IndentationOptions with_local(const LocalContactLaw& law,
   return o;
 }
 const LocalContactLaw kHertz = hertz_law(12.7, 10000.0);
-const LocalContactLaw kThinLayer{LocalLawKind::kThinLayer, 0.0, 1e-4, 0.0};
+const LocalContactLaw kThinLayer{LocalLawKind::kThinLayer, 0.0, 1e-4, 0.0, nullptr};
 
 TEST(IndentationProblem, HertzLocalLaw_NonlinearJacobianMatchesFiniteDifferences) {
   IndentationFixture f(coarse_cap_case("nonlinear", "[0/90]2S", "quarter"),
                        exact_solves(with_local(kHertz)));
   ASSERT_EQ(f.problem->num_local_unknowns(), 1);
   expect_jacobian_matches_fd(*f.problem, 0.3);
+  // alpha borders the Krylov solver's matrix (ContactTerm::borders): no LU of the whole Jacobian.
+  EXPECT_GT(f.problem->solver_counters().krylov_solves, 0);
+  EXPECT_EQ(f.problem->solver_counters().lu_fallbacks, 0);
 }
 
 TEST(IndentationProblem, HertzLocalLaw_LinearJacobianMatchesFiniteDifferences) {
@@ -192,6 +196,41 @@ TEST(IndentationProblem, ThinLayerLocalLaw_JacobianMatchesFiniteDifferences) {
   expect_jacobian_matches_fd(*f.problem, 0.3);
 }
 
+// The arclength metric (inner()): the mean square of the shell coordinates, a power law's alpha
+// counting as one more, plus the mean square of every multiplier over kappa (mm), whatever local
+// law is present: each unit vector has its documented weight, and different unknowns do not mix.
+TEST(IndentationProblem, ArclengthMetric_WeighsTheShellAlphaAndEveryMultiplier) {
+  for (const IndentationOptions& o :
+       {IndentationOptions{}, with_local(kHertz), with_local(kThinLayer)}) {
+    IndentationFixture f(coarse_cap_case("linear", "[0/90]2S"), o);
+    const IndentationProblem& p = *f.problem;
+    const UnknownLayout u = p.layout();
+    ASSERT_GT(u.multipliers, 1);
+    const double kappa = p.stiffness_scale();
+    const double shell_weight = 1.0 / (u.shell + u.local);
+    const double multiplier_weight = 1.0 / (u.multipliers * kappa * kappa);
+    std::vector<std::pair<int, double>> probes = {
+        {0, shell_weight},
+        {u.shell - 1, shell_weight},
+        {u.lambda_begin(), multiplier_weight},
+        {u.lambda_begin() + u.multipliers - 1, multiplier_weight}};
+    if (u.local) probes.emplace_back(u.alpha_index(), shell_weight);
+    const auto unit = [&](int i) {
+      cont::Vector e = cont::Vector::Zero(p.size());
+      e[i] = 1;
+      return e;
+    };
+    for (const auto& [i, weight] : probes) {
+      EXPECT_NEAR(p.inner(unit(i), unit(i)), weight, 1e-12 * weight) << "unknown " << i;
+      for (const auto& probe : probes) {
+        const int j = probe.first;
+        if (j == i) continue;
+        EXPECT_EQ(p.inner(unit(i), unit(j)), 0.0) << i << ", " << j;
+      }
+    }
+  }
+}
+
 // The dent's rows (hertz_dent.hpp): d g_i / d alpha = du/dalpha, 1 inside the patch and
 // (2/pi) asin(a/r) outside. At alpha = 0.5 mm the patch radius (R alpha)^0.5 = 2.52 mm spans
 // the 2 mm apex ring of the coarse cap and the rows beyond it are outside; the same with
@@ -200,7 +239,7 @@ TEST(IndentationProblem, ThinLayerLocalLaw_JacobianMatchesFiniteDifferences) {
 TEST(IndentationProblem, HertzDentRows_JacobianMatchesFiniteDifferencesInsideAndOutsideThePatch) {
   const CaseFile c = coarse_cap_case("linear", "[45/-45]2S");
   {
-    IndentationFixture f(c, with_local(kHertz));
+    IndentationFixture f(c, exact_solves(with_local(kHertz)));
     const double a = std::sqrt(kHertz.radius * 0.5);
     int inside = 0, outside = 0;
     for (int n : f.problem->candidates()) {
@@ -215,8 +254,25 @@ TEST(IndentationProblem, HertzDentRows_JacobianMatchesFiniteDifferencesInsideAnd
   }
   LocalContactLaw uniform = kHertz;
   uniform.radius = 0;
-  IndentationFixture f(coarse_cap_case("nonlinear", "[0/90]2S", "quarter"), with_local(uniform));
+  IndentationFixture f(coarse_cap_case("nonlinear", "[0/90]2S", "quarter"),
+                       exact_solves(with_local(uniform)));
   expect_jacobian_matches_fd(*f.problem, 0.3, 0.5);
+}
+
+// The finite-thickness anisotropic law (contact/layer_contact_law.hpp: the paper's [0/90]2S as a
+// free plate, resolved plies): its tabulated F(alpha), stiffness and dent rows against finite
+// differences, with the patch (radius ~2.3 mm at alpha = 0.5 mm) over the 2 mm ring and rows
+// outside it. The dent's rate is the flat punch's profile, equal to du/dalpha of the tables to
+// their accuracy (~1e-3 of the rate), inside the FD check's tolerance.
+TEST(IndentationProblem, AnisotropicPlateLaw_JacobianMatchesFiniteDifferences) {
+  const CaseFile c = coarse_cap_case("linear", "[0/90]2S");
+  const LocalContactLaw law =
+      anisotropic_local_law(c.laminate, {LocalSupport::kPlate, LocalPlies::kResolved, 10.98, 0.0});
+  IndentationFixture f(c, exact_solves(with_local(law)));
+  expect_jacobian_matches_fd(*f.problem, 0.3, 0.5);
+  IndentationFixture g(coarse_cap_case("nonlinear", "[0/90]2S", "quarter"),
+                       exact_solves(with_local(law)));
+  expect_jacobian_matches_fd(*g.problem, 0.3);
 }
 
 TEST(IndentationProblem, HertzLocalLaw_DepthDerivativeMatchesFiniteDifferences) {

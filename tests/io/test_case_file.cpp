@@ -80,6 +80,27 @@ TEST(CaseFile, OptionalSectionsDefaultToThePaperCase) {
                                                          OutputFormat::kVtu}));
 }
 
+TEST(CaseFile, AnisotropicLocalLawAndItsChoices) {
+  const CaseFile defaults =
+      parse_case_file(std::string(kMinimal) + "contact: {local: anisotropic}\n", "a.yaml");
+  EXPECT_EQ(defaults.contact.local, LocalContactModel::kAnisotropic);
+  EXPECT_EQ(defaults.contact.local_support, LocalSupport::kHalfSpace);
+  EXPECT_EQ(defaults.contact.local_plies, LocalPlies::kHomogenised);
+  const CaseFile c = parse_case_file(
+      std::string(kMinimal) +
+          "contact: {local: anisotropic, local_support: plate, local_plies: resolved}\n",
+      "b.yaml");
+  EXPECT_EQ(c.contact.local_support, LocalSupport::kPlate);
+  EXPECT_EQ(c.contact.local_plies, LocalPlies::kResolved);
+  for (const auto& [name, support] : {std::pair{"bonded", LocalSupport::kBondedBase},
+                                      std::pair{"frictionless", LocalSupport::kFrictionlessBase}})
+    EXPECT_EQ(parse_case_file(std::string(kMinimal) +
+                                  "contact: {local: anisotropic, local_support: " + name + "}\n",
+                              "c.yaml")
+                  .contact.local_support,
+              support);
+}
+
 TEST(CaseFile, ConvertsUnitsToInternalUnits) {
   const CaseFile c = parse_case_file(R"(
 material: {type: orthotropic, E1: 18.855 Msi, E2: 10 GPa, E3: 10000 MPa, G12: 6e9 Pa,

@@ -70,6 +70,20 @@ TEST(CaseFileErrors, PowerLawLocalContactNeedsNodalTraction) {
                {"contact.local", "yang_sun", 4, "not available with the interpolated traction"});
 }
 
+// The anisotropic law's own keys (docs/case-file.md): refused with another law, and their values
+// checked like any choice.
+TEST(CaseFileErrors, LocalSupportWithoutTheAnisotropicLaw) {
+  expect_error(kHead + "contact: {local: hertz, local_support: bonded}\n",
+               {"contact.local_support", "bonded", 3, "chooses how `local: anisotropic`"});
+  expect_error(kHead + "contact:\n  local_plies: resolved\n",
+               {"contact.local_plies", "resolved", 4, "chooses how `local: anisotropic`"});
+  expect_error(kHead + "contact: {local: anisotropic, local_support: glued}\n",
+               {"contact.local_support", "glued", 3, "half_space"});
+  expect_error(
+      kHead + "kinematics: linear\ncontact: {traction: interpolated, local: anisotropic}\n",
+      {"contact.local", "anisotropic", 4, "not available with the interpolated traction"});
+}
+
 TEST(CaseFileErrors, UnknownTopLevelKeySuggestsTheClosest) {
   expect_error(kHead + "meshh: {element: mitc4}\n",
                {"meshh", "{element: mitc4}", 3, "unknown key 'meshh' (did you mean 'mesh'?)"});

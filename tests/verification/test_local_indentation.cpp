@@ -145,6 +145,29 @@ TEST(LocalIndentationLaw, OfThePaperCap_YangSunAndHertzConstants) {
   EXPECT_EQ(local_contact_law(c).kind, LocalLawKind::kNone);
 }
 
+// The anisotropic law of an isotropic plate: its half-space is Hertz's (the same k and dent radius
+// as `hertz`, to roundoff), and its finite-thickness forms start as Hertz's (a/h -> 0).
+TEST(LocalIndentationLaw, AnisotropicOfAnIsotropicPlate_IsHertzAtSmallContactRadius) {
+  CaseFile c = plate_case(3.8, quarter_mesh(2.0, 4.0), "hertz", 0.05, 0.05);
+  const LocalContactLaw hertz = local_contact_law(c);
+  c.contact.local = LocalContactModel::kAnisotropic;
+  const LocalContactLaw half_space = local_contact_law(c);
+  test::record_verification(kTable, "anisotropic (half_space) k of an isotropic plate vs hertz",
+                            hertz.k, half_space.k, 1e-10, "Hertz (point-loads.md 4.3)");
+  EXPECT_NEAR(half_space.k, hertz.k, 1e-10 * hertz.k);
+  EXPECT_EQ(half_space.radius, hertz.radius);
+  for (LocalSupport support :
+       {LocalSupport::kBondedBase, LocalSupport::kFrictionlessBase, LocalSupport::kPlate}) {
+    c.contact.local_support = support;
+    const LocalContactLaw law = local_contact_law(c);
+    ASSERT_NE(law.layer, nullptr);
+    const double alpha = 1e-7;  // a = 1.1e-3 mm against h = 1.9 or 3.8 mm
+    EXPECT_NEAR(law.force(alpha) / hertz.force(alpha), 1.0, 2e-3);
+    // Stiffer than the half-space once the contact radius is a fair fraction of h.
+    EXPECT_GT(law.force(0.1), 1.1 * hertz.force(0.1));
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // 2. Thick-plate limit: clamped plate a = 25 mm, t = 50 mm (t/a = 2: the global compliance
 // ~1e-6 mm/N is negligible at small loads), hertz, depth 1e-4 mm (linear kinematics: all lengths
@@ -379,11 +402,11 @@ struct EnergyBalance {
 // s sum_i lambda_i (1 - u_i') of a state (whole shell, N).
 double defect_rate(const IndentationFixture& f, const IndentationState& s) {
   const Vector3d apex = f.model.mesh.nodes[f.model.apex_node()];
-  const double radius = f.problem->local_law().radius;
+  const LocalContactLaw& law = f.problem->local_law();
   double sum = 0;
   for (std::size_t i = 0; i < s.nodes.size(); ++i) {
     const double r = (f.model.mesh.nodes[s.nodes[i]] - apex).head<2>().norm();
-    sum += s.multipliers[i] * (1 - hertz_dent(r, s.local_indentation, radius).rate);
+    sum += s.multipliers[i] * (1 - law.dent(r, s.local_indentation).rate);
   }
   return f.model.symmetry_factor * sum;
 }
@@ -409,7 +432,9 @@ EnergyBalance energy_balance(IndentationFixture& f, const cont::Vector& z0, doub
   }
   e.stored = b.energy + b.local_energy - a.energy - a.local_energy;
   e.contact_nodes = b.contact_nodes;
-  const double a_patch = std::sqrt(f.problem->local_law().radius * b.local_indentation);
+  const LocalContactLaw& law = f.problem->local_law();
+  const double a_patch = law.layer ? law.layer->contact_radius(b.local_indentation)
+                                   : std::sqrt(law.radius * b.local_indentation);
   const Vector3d apex = f.model.mesh.nodes[f.model.apex_node()];
   for (std::size_t i = 0; i < b.nodes.size(); ++i)
     e.outside += b.multipliers[i] > 1e-9 * b.force &&  // in contact, as contact_nodes counts
@@ -490,6 +515,26 @@ TEST(LocalIndentationVerification, ContactOutsideThePatch_WorkEqualsStrainPlusLo
       "the defect D of the nodes in contact outside the patch (derived)");
   EXPECT_GT(e.defect, 100 * std::abs(error));
   EXPECT_NEAR(e.stored - e.work, e.defect, 0.01 * e.defect);
+}
+
+// The anisotropic law of finite thickness (the paper's [0/90]2S, its upper half bonded to the
+// mid-surface: F stiffens as the contact radius grows against the thickness) on the issue's
+// plate, 2 mm mesh, 0.01 -> 0.05 mm: the apex alone in contact, so D = 0 and W = U + E_local with
+// E_local = int F dalpha of the tabulated law, at the trapezoidal rule's second order.
+TEST(LocalIndentationVerification, AnisotropicBondedLaw_WorkEqualsStrainPlusLocalEnergy) {
+  CaseFile c = plate_case(3.8, quarter_mesh(2.0, 4.0), "none", 0.05, 0.05);
+  c.laminate = testing::coarse_cap_case("linear", "[0/90]2S").laminate;
+  c.contact.local = LocalContactModel::kAnisotropic;
+  c.contact.local_support = LocalSupport::kBondedBase;
+  IndentationOptions o;
+  o.local = local_contact_law(c);
+  ASSERT_NE(o.local.layer, nullptr);
+  IndentationFixture f(c, o);
+  for (const EnergyBalance& e : expect_second_order_balance(
+           f, 0.01, 0.05, "plate [0/90]2S, anisotropic bonded, 2 mm mesh")) {
+    EXPECT_EQ(e.contact_nodes, 1);
+    EXPECT_LT(std::abs(e.defect), 1e-12 * e.work);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,0 +1,181 @@
+#include "contact/support_kernel.hpp"
+
+#include <cmath>
+
+#include "contact/anisotropic_half_space.hpp"
+#include "contact/layer_compliance.hpp"
+#include "core/error.hpp"
+#include "section/gauss_legendre.hpp"
+
+namespace si {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kMapScale = 2.0;      // L of the map x = L (1 + xi) / (1 - xi)
+constexpr int kKappaDegree = 96;       // Chebyshev degree of kappa in xi
+constexpr int kTransformDegree = 160;  // and of its cosine transform in y (y_max ~ 24)
+// Beyond x = 400 (a wavelength below 1/60 of the stack, several wavelengths within any ply of
+// the top ten percent of it) the support is the top layer's half-space to far below 1e-12: kappa
+// is then the plate's Poisson term alone (0 for the layers), instead of 400 + transfer steps.
+constexpr double kFarField = 400;
+// int_0^inf kappa cos(x y) dx is taken over [0, 60] (kappa decays exponentially for the layers
+// and like x^-3 for the plate: the tail is below 1e-5 of the integral), then sampled at 200
+// points per unit of y for the Hermite interpolation.
+constexpr double kTransformRange = 60;
+constexpr double kTransformSamplesPerUnit = 200;
+
+Vector3d direction(double phi) {
+  return Vector3d(std::cos(phi), std::sin(phi), 0);
+}
+
+// A layer under the in-plane strain v = e e (Voigt [e11, e22, g12]) with the out-of-plane
+// stresses zero (plate bending): its plane-stress stiffness along e and its thickness strain,
+// e33 = -nu (the strain along e).
+struct PlaneStress {
+  double Q = 0;   // v^T Q v, Q = C_pp - C_pt C_tt^-1 C_tp
+  double nu = 0;  // [C_tt^-1 C_tp v]_33
+};
+
+PlaneStress plane_stress(const Matrix6d& C, double phi) {
+  const int p[3] = {0, 1, 5}, t[3] = {2, 3, 4};
+  Matrix3d Cpp, Cpt, Ctp, Ctt;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      Cpp(i, j) = C(p[i], p[j]);
+      Cpt(i, j) = C(p[i], t[j]);
+      Ctp(i, j) = C(t[i], p[j]);
+      Ctt(i, j) = C(t[i], t[j]);
+    }
+  const Vector3d e = direction(phi);
+  const Vector3d v(e[0] * e[0], e[1] * e[1], 2 * e[0] * e[1]);
+  const Vector3d out_of_plane = Ctt.inverse() * Ctp * v;  // e_t = -this for e_p = v
+  PlaneStress s;
+  s.Q = v.dot((Cpp - Cpt * Ctt.inverse() * Ctp) * v);
+  s.nu = out_of_plane[0];
+  return s;
+}
+
+}  // namespace
+
+SupportKernel::SupportKernel(const SupportSpec& spec, double y_max, int directions)
+    : spec_(spec), directions_(directions) {
+  SI_REQUIRE(spec.support != LocalSupport::kHalfSpace,
+             "SupportKernel: a half-space has no thickness correction");
+  SI_REQUIRE(!spec.layers.empty(), "SupportKernel: no layers");
+  SI_REQUIRE(directions >= 2 && y_max > 0, "SupportKernel: need 2 directions and y_max > 0");
+  SI_REQUIRE(spec.indenter_compliance >= 0, "SupportKernel: negative indenter compliance");
+  for (const LayerStiffness& l : spec.layers) thickness_ += l.thickness;
+  const Matrix6d& top = spec.layers.back().C;
+  for (int j = 0; j < directions_; ++j)
+    far_compliance_ += half_space_normal_compliance(top, kPi * j / directions_) / directions_;
+  far_compliance_ += spec.indenter_compliance;
+  if (spec.support == LocalSupport::kPlate) {
+    SI_REQUIRE(spec.shear_stiffness.llt().info() == Eigen::Success &&
+                   spec.shear_stiffness.determinant() > 0,
+               "SupportKernel: the plate support needs a positive-definite shear stiffness");
+    for (int j = 0; j < directions_; ++j) {
+      const double phi = kPi * j / directions_;
+      double z = -thickness_ / 2, D = 0, I = 0;
+      for (const LayerStiffness& l : spec.layers) {
+        const PlaneStress s = plane_stress(l.C, phi);
+        const double z1 = z + l.thickness;
+        D += s.Q * (z1 * z1 * z1 - z * z * z) / 3;
+        const double lo = std::max(z, 0.0), hi = std::max(z1, 0.0);
+        I += s.nu * (hi * hi - lo * lo) / 2;
+        z = z1;
+      }
+      const Vector2d e(std::cos(phi), std::sin(phi));
+      poisson_c2_.push_back(I * thickness_ / D);
+      bending_ratio_.push_back(D / (e.dot(spec.shear_stiffness * e) * thickness_ * thickness_));
+    }
+  }
+  // kappa in xi: xi = -1 is x = 0 (kappa = -1: a finite stack's compliance vanishes with k),
+  // xi = 1 is x = infinity (kappa = 0).
+  const std::vector<double> xi = chebyshev_points(-1, 1, kKappaDegree);
+  std::vector<double> values(xi.size());
+  for (std::size_t j = 0; j < xi.size(); ++j) {
+    if (xi[j] >= 1)
+      values[j] = 0;
+    else if (xi[j] <= -1)
+      values[j] = -1;
+    else
+      values[j] = kappa_direct(kMapScale * (1 + xi[j]) / (1 - xi[j]));
+  }
+  kappa_ = ChebyshevSeries(-1, 1, values);
+  const KernelQuadrature q = quadrature(kTransformRange, 0.25);
+  const std::vector<double> y = chebyshev_points(0, y_max, kTransformDegree);
+  std::vector<double> transform(y.size());
+  for (std::size_t j = 0; j < y.size(); ++j) {
+    double s = 0;
+    for (std::size_t i = 0; i < q.x.size(); ++i)
+      s += q.weight[i] * q.kappa[i] * std::cos(q.x[i] * y[j]);
+    transform[j] = s;
+  }
+  const ChebyshevSeries series(0, y_max, transform);
+  const int samples = static_cast<int>(std::ceil(y_max * kTransformSamplesPerUnit));
+  transform_step_ = y_max / samples;
+  for (int j = 0; j <= samples; ++j) {
+    transform_.push_back(series(j * transform_step_));
+    transform_slope_.push_back(series.derivative(j * transform_step_));
+  }
+}
+
+double SupportKernel::cosine_transform(double y) const {
+  const double u = y / transform_step_;
+  const int last = static_cast<int>(transform_.size()) - 1;
+  SI_REQUIRE(u >= 0 && u <= last + 1e-9, "SupportKernel::cosine_transform: y out of range");
+  const int j = std::min(static_cast<int>(u), last - 1);
+  const double t = u - j, h = transform_step_;
+  const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t);
+  const double h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
+  return h00 * transform_[j] + h10 * h * transform_slope_[j] + h01 * transform_[j + 1] +
+         h11 * h * transform_slope_[j + 1];
+}
+
+double SupportKernel::mean_compliance(double x) const {
+  const double k = x / thickness_;
+  double sum = 0;
+  for (int j = 0; j < directions_; ++j) {
+    const double phi = kPi * j / directions_;
+    if (x > kFarField) {
+      sum += half_space_normal_compliance(spec_.layers.back().C, phi);
+      if (spec_.support == LocalSupport::kPlate)
+        sum += poisson_c2_[j] / x / (1 + bending_ratio_[j] * x * x);
+    } else if (spec_.support == LocalSupport::kPlate) {
+      const PlateFaceCompliance f = plate_face_compliance(spec_.layers, phi, k);
+      sum += f.top - f.mid + poisson_c2_[j] / x / (1 + bending_ratio_[j] * x * x);
+    } else {
+      const LayerBase base = spec_.support == LocalSupport::kBondedBase ? LayerBase::kBonded
+                                                                        : LayerBase::kFrictionless;
+      sum += layer_normal_compliance(spec_.layers, base, phi, k);
+    }
+  }
+  return sum / directions_ + spec_.indenter_compliance;
+}
+
+double SupportKernel::kappa_direct(double x) const {
+  SI_REQUIRE(x > 0, "SupportKernel::kappa_direct: x must be positive");
+  return mean_compliance(x) / far_compliance_ - 1;
+}
+
+double SupportKernel::kappa(double x) const {
+  SI_REQUIRE(x >= 0, "SupportKernel::kappa: x must not be negative");
+  return kappa_((x - kMapScale) / (x + kMapScale));
+}
+
+KernelQuadrature SupportKernel::quadrature(double x_max, double panel) const {
+  const GaussRule g = gauss_legendre(8);
+  KernelQuadrature q;
+  const int panels = static_cast<int>(std::ceil(x_max / panel));
+  const double h = x_max / panels;
+  for (int p = 0; p < panels; ++p)
+    for (std::size_t i = 0; i < g.points.size(); ++i) {
+      const double x = h * (p + (g.points[i] + 1) / 2);
+      q.x.push_back(x);
+      q.weight.push_back(h / 2 * g.weights[i]);
+      q.kappa.push_back(kappa(x));
+    }
+  return q;
+}
+
+}  // namespace si

@@ -1,0 +1,107 @@
+// The stability of a converged indentation point (docs/theory/continuation.md 9, 12): the
+// Hessian of the Lagrangian L = Pi(x) - sum lambda_i g_i(x) in the shell's chart coordinates,
+// restricted to the directions that keep the strongly active contact constraints.
+//
+// The shell rows of F are r(x) - sum lambda_i G_i (rotation rows on the current axes), and the
+// Jacobian's shell block is their derivative K - sum lambda_i dG_i with respect to increments q
+// about the current axes. A chart increment dx moves them by q = T dx (shell_chart.hpp), so the
+// chart gradient of L is T' (r - sum lambda_i G_i) and its derivative
+//     H = T' ((K - sum lambda_i dG_i) T + D) + (dT'/dx) (r - sum lambda_i G_i),
+// whose last term and D vanish with the residual at a converged point: H = T' J_xx, J_xx the
+// Jacobian's shell block after the chart transform. It is symmetric to the Newton tolerance; its
+// symmetric part is analysed. The constraint rows are G_i' T (for linear kinematics T = I, and
+// the gaps are linear: H = K). A mode v in chart coordinates is the shell part of z; the active
+// multipliers' part solves H v = A' mu in the least-squares sense (a null vector of the Jacobian
+// at a critical point), inactive multipliers stay 0.
+#include <utility>
+
+#include "continuation/cholmod_factorization.hpp"
+#include "continuation/stability_analysis.hpp"
+#include "core/error.hpp"
+#include "indentation/indentation_problem.hpp"
+
+namespace si {
+namespace {
+
+// The block-diagonal chart transform of the free dofs: identity on translations, the 2x2 blocks
+// T on each node's rotation coordinates.
+SparseMatrix chart_transform(int n, const std::vector<ShellChart::RotationBlock>& blocks) {
+  std::vector<bool> rotation(static_cast<std::size_t>(n), false);
+  Triplets t;
+  t.reserve(static_cast<std::size_t>(n) + 2 * blocks.size());
+  for (const ShellChart::RotationBlock& b : blocks) {
+    const int eq[2] = {b.eq_a, b.eq_b};
+    for (int r = 0; r < 2; ++r) {
+      if (eq[r] < 0) continue;
+      rotation[static_cast<std::size_t>(eq[r])] = true;
+      for (int c = 0; c < 2; ++c)
+        if (eq[c] >= 0) t.emplace_back(eq[r], eq[c], b.T(r, c));
+    }
+  }
+  for (int i = 0; i < n; ++i)
+    if (!rotation[static_cast<std::size_t>(i)]) t.emplace_back(i, i, 1.0);
+  SparseMatrix T(n, n);
+  T.setFromTriplets(t.begin(), t.end());
+  return T;
+}
+
+}  // namespace
+
+bool IndentationProblem::provides_stability() const {
+  return options_.local.kind == LocalLawKind::kNone;
+}
+
+IndentationProblem::StabilityMatrices IndentationProblem::stability_matrices(const cont::Vector& z,
+                                                                             double h) {
+  SI_REQUIRE(provides_stability(),
+             "indentation: stability is not provided with a local contact law");
+  const int nf = shell_.size();
+  cont::Vector r_free;
+  const std::vector<NodeState>& states = shell_terms(z, h, r_free);
+  // The Jacobian as factorize() assembles it, in a copy: the solver may still read jacobian_.
+  SparseMatrix J = jacobian_;
+  const SparseMatrix& K = shell_.tangent(z.head(nf));
+  std::fill(J.valuePtr(), J.valuePtr() + J.nonZeros(), 0.0);
+  for (int k = 0; k < K.nonZeros(); ++k) J.valuePtr()[k_to_j_[k]] = K.valuePtr()[k];
+  const TermPoint p{z, h, states};
+  for (const auto& t : parts_.terms) t->add_jacobian(p, J.valuePtr(), nullptr);
+  const SparseMatrix T = chart_transform(nf, shell_.to_chart(z.head(nf), r_free, J));
+
+  StabilityMatrices m;
+  const SparseMatrix Jxx = J.topLeftCorner(nf, nf);
+  const SparseMatrix H = SparseMatrix(T.transpose()) * Jxx;
+  const SparseMatrix Ht = H.transpose();
+  m.H = 0.5 * (H + Ht);
+  m.asymmetry = SparseMatrix(H - Ht).norm() / H.norm();
+  m.A = active_constraint_gradients(z, h, &m.multipliers) * T;
+  return m;
+}
+
+bool IndentationProblem::stability(const cont::Vector& z, double h, int modes,
+                                   cont::Stability& out) {
+  StabilityMatrices m;
+  try {
+    m = stability_matrices(z, h);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::kNumerical) throw;
+    return false;
+  }
+  cont::StabilityOptions options;
+  options.factorization = cont::cholmod_first_factorization();
+  if (!cont::analyse_stability(m.H, m.A, modes, out, options)) return false;
+  const int nf = shell_.size();
+  for (cont::Vector& v : out.modes) {
+    cont::Vector mode = cont::Vector::Zero(size());
+    mode.head(nf) = v;
+    if (!m.multipliers.empty()) {
+      // The Jacobian's multiplier columns are -G_i (not +A' of the bordered matrix).
+      const cont::Vector mu = -cont::multiplier_direction(m.H, m.A, v);
+      for (std::size_t k = 0; k < m.multipliers.size(); ++k)
+        mode[m.multipliers[k]] = mu[static_cast<Eigen::Index>(k)];
+    }
+    v = std::move(mode);
+  }
+  return true;
+}
+
+}  // namespace si
