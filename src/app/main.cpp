@@ -40,7 +40,9 @@ constexpr const char* kSectionHelp =
 constexpr const char* kStaticHelp =
     "Load-controlled static run of a shell without contact, from a case file with a `load` "
     "section (apex_force or pressure, in `steps` equal increments; linear or nonlinear from "
-    "`kinematics`). Prints a progress line per step to stderr and a table (load factor, force N, "
+    "`kinematics`), or with `static: {method: pseudo_arclength}` through limit points (snap-"
+    "through, snap-back; the limit points are located). Prints a progress line per step to "
+    "stderr and a table (load factor, force N, "
     "apex deflection mm, strain energy N*mm, reaction N, iterations) to stdout, then writes "
     "static.csv, static.json and static.vtu (last step, nodal resultants N and M averaged over "
     "elements) to the output directory. Exit 1 if a step fails (converged steps are written).\n"

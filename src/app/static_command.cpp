@@ -9,7 +9,7 @@
 #include <sstream>
 #include <vector>
 
-#include "analysis/static_solver.hpp"
+#include "analysis/static_run.hpp"
 #include "app/thread_count.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -56,17 +56,32 @@ std::string csv_text(const std::vector<StaticRow>& rows) {
   return os.str();
 }
 
+nlohmann::json json_of(const StaticRow& r) {
+  return {{"load_factor", r.load_factor},       {"force_N", r.force},
+          {"apex_deflection_mm", r.deflection}, {"strain_energy_Nmm", r.energy},
+          {"reaction_N", r.reaction},           {"iterations", r.iterations}};
+}
+
+// A located event of the run (a limit point of the load factor), with the values there.
+struct StaticEventRow {
+  cont::EventType type;
+  StaticRow row;
+};
+
 nlohmann::json json_of(const CaseFile& c, const ShellModel& m, const DofMap& dofs,
-                       const std::vector<StaticRow>& rows, const std::string& failure) {
+                       const std::vector<StaticRow>& rows,
+                       const std::vector<StaticEventRow>& event_rows, const std::string& failure) {
   nlohmann::json steps = nlohmann::json::array();
-  for (const auto& r : rows)
-    steps.push_back({{"load_factor", r.load_factor},
-                     {"force_N", r.force},
-                     {"apex_deflection_mm", r.deflection},
-                     {"strain_energy_Nmm", r.energy},
-                     {"reaction_N", r.reaction},
-                     {"iterations", r.iterations}});
+  for (const auto& r : rows) steps.push_back(json_of(r));
+  nlohmann::json events = nlohmann::json::array();
+  for (const auto& e : event_rows) {
+    nlohmann::json j = json_of(e.row);
+    j.erase("iterations");
+    j["type"] = cont::event_type_name(e.type);
+    events.push_back(j);
+  }
   return {{"case", c.file},
+          {"method", c.static_run.method == PathMethod::kNatural ? "natural" : "pseudo_arclength"},
           {"element", m.element->name()},
           {"kinematics", m.kinematics == Kinematics::kLinear ? "linear" : "nonlinear"},
           {"nodes", m.mesh.num_nodes()},
@@ -78,7 +93,8 @@ nlohmann::json json_of(const CaseFile& c, const ShellModel& m, const DofMap& dof
            "force and deflection along -z, reaction along +z"},
           {"status", failure.empty() ? "completed" : "failed"},
           {"failure", failure},
-          {"steps", steps}};
+          {"steps", steps},
+          {"events", events}};
 }
 
 bool wants(const OutputSpec& output, OutputFormat format) {
@@ -151,13 +167,15 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   const OutputLock lock(dir, dir_where);
 
   const DofMap dofs = make_dof_map(m.mesh, m.supports, m.displacements);
-  StaticSettings settings;
+  StaticSettings settings = c.static_run;
   settings.steps = c.load->steps;
   settings.record_nodes = {m.apex_node()};
-  StaticSolver solver(m.mesh, dofs, *m.element, m.law, m.kinematics, m.loads, settings, o.threads);
+  const bool natural = settings.method == PathMethod::kNatural;
   err << "static: " << m.mesh.num_nodes() << " nodes, " << m.mesh.num_elements() << " "
-      << m.element->name() << " elements, " << dofs.num_free() << " free dofs, " << settings.steps
-      << " load steps\n";
+      << m.element->name() << " elements, " << dofs.num_free() << " free dofs, "
+      << (natural ? std::to_string(settings.steps) + " load steps"
+                  : "pseudo-arclength to load factor " + std::to_string(settings.load_factor_max))
+      << "\n";
 
   std::vector<StaticRow> rows;
   std::vector<NodeState> last_state;
@@ -167,7 +185,7 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
     const StaticRow& row = rows.back();
     err << "step " << rows.size() << ": load factor " << r.load_factor << ", " << r.iterations
         << " iterations, apex deflection " << row.deflection << " mm"
-        << (on_nominal_grid(r.load_factor, settings.steps)
+        << (!natural || on_nominal_grid(r.load_factor, settings.steps)
                 ? ""
                 : " (step cut back after a failed attempt)")
         << "\n";
@@ -178,30 +196,34 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
           << row.force << " N: the results are not in equilibrium\n";
     return true;
   };
-  std::vector<NodeState> state = reference_state(m.mesh);
-  std::string failure;
+  StaticResult result;
   try {
-    solver.solve(state, on_step);
+    result = run_static(m.mesh, dofs, *m.element, m.law, m.kinematics, m.loads, settings, on_step,
+                        o.threads);
   } catch (const Error& e) {
     // Input errors raised inside the run come from the elements (a degenerate element).
-    if (e.kind() == ErrorKind::kInput) {
-      Where w = e.where();
-      if (w.key == "element") w.key.clear();  // a degenerate element (shell/quad4_shell.cpp)
-      throw located_in_case(Error(e.kind(), e.reason(), w)
-                                .within(Where{c.file, "mesh.element", m.element->name(), 0}),
-                            text);
-    }
-    if (e.kind() != ErrorKind::kNumerical) throw;
-    failure = e.what();
+    if (e.kind() != ErrorKind::kInput) throw;
+    Where w = e.where();
+    if (w.key == "element") w.key.clear();  // a degenerate element (shell/quad4_shell.cpp)
+    throw located_in_case(
+        Error(e.kind(), e.reason(), w).within(Where{c.file, "mesh.element", m.element->name(), 0}),
+        text);
   }
+  const std::string& failure = result.failure;
+  std::vector<StaticEventRow> events;
+  for (const StaticEvent& e : result.events)
+    events.push_back({e.type, make_row(e.at, m.symmetry_factor)});
 
   out << "Static run of " << c.file << " (whole-shell values; force and apex deflection along -z)\n"
       << "  lambda        force_N  deflection_mm  strain_energy_Nmm     reaction_N  iters\n";
   for (const auto& r : rows) out << format_row(r) << "\n";
+  for (const auto& e : events)
+    out << "  " << cont::event_type_name(e.type) << " at load factor " << e.row.load_factor
+        << ": force " << e.row.force << " N, apex deflection " << e.row.deflection << " mm\n";
 
   const Assembler assembler(m.mesh, dofs, *m.element, m.law, m.kinematics, o.threads);
   write_results(dir, m, c.output, assembler, rows.empty() ? nullptr : &last_state, csv_text(rows),
-                json_of(c, m, dofs, rows, failure).dump(2) + "\n", err);
+                json_of(c, m, dofs, rows, events, failure).dump(2) + "\n", err);
   if (failure.empty()) return 0;
   err << "shellindent: error: the run stopped after " << rows.size() << " converged step(s)"
       << (rows.empty() ? "" : " at load factor " + std::to_string(rows.back().load_factor)) << ": "

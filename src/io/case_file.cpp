@@ -387,6 +387,40 @@ std::optional<LoadSpec> read_load(const MapReader& top) {
   return load;
 }
 
+// `static:` (docs/case-file.md): natural load stepping (load.steps) or pseudo-arclength.
+StaticSettings read_static(const MapReader& top) {
+  StaticSettings s;
+  const auto map = section(top, "static");
+  if (!map) return s;
+  map->allow_only({"method", "step", "step_min", "step_max", "parameter_weight", "load_factor_max",
+                   "max_steps"});
+  s.method = map->choice_or("method", kMethods, s.method);
+  if (s.method == PathMethod::kNatural) {
+    for (const char* key :
+         {"step", "step_min", "step_max", "parameter_weight", "load_factor_max", "max_steps"})
+      if (map->has(key))
+        throw_input("only with method: pseudo_arclength (natural steps are load.steps)",
+                    map->where(key));
+    return s;
+  }
+  s.step = map->positive_or("step", Dimension::kLength, s.step);
+  s.step_min = map->positive_or("step_min", Dimension::kLength, s.step / 1000.0);
+  s.step_max = map->positive_or("step_max", Dimension::kLength, 10.0 * s.step);
+  if (s.step < s.step_min || s.step > s.step_max)
+    throw_input("step must lie in [step_min, step_max] = [" +
+                    format_quantity(s.step_min, Dimension::kLength) + ", " +
+                    format_quantity(s.step_max, Dimension::kLength) + "]",
+                map->where(map->has("step")       ? "step"
+                           : map->has("step_min") ? "step_min"
+                                                  : "step_max"));
+  s.parameter_weight = map->positive_or("parameter_weight", Dimension::kLength, s.parameter_weight);
+  s.load_factor_max =
+      map->positive_or("load_factor_max", Dimension::kDimensionless, s.load_factor_max);
+  s.max_steps = map->integer_or("max_steps", s.max_steps);
+  if (s.max_steps < 1) throw_input("must be a whole number >= 1", map->where("max_steps"));
+  return s;
+}
+
 MaterialTable read_materials(const MapReader& top) {
   const Material default_material = read_material(top.at("material"), top.where("material"));
   std::vector<Material> named;
@@ -424,7 +458,7 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   if (root.IsNull()) throw_input("the case file is empty", Where{file_label, "", "", 0});
   const MapReader top(root, Where{file_label, "", "", 0});
   top.allow_only({"material", "materials", "laminate", "shell", "mesh", "kinematics", "indenter",
-                  "contact", "path", "output", "load", "loads", "supports", "damage"});
+                  "contact", "path", "output", "load", "loads", "supports", "static", "damage"});
   top.at("laminate");  // say it is missing before reading the rest
   const MaterialTable materials = read_materials(top);
   const Kinematics kinematics =
@@ -438,6 +472,7 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   PathSpec path = read_path(top, contact);
   OutputSpec output = read_output(top);
   std::optional<LoadSpec> load = read_load(top);
+  StaticSettings static_run = read_static(top);
   std::optional<DamageSpec> damage = read_damage(top, laminate);
   return CaseFile{{{std::move(laminate), std::move(shell), std::move(mesh), kinematics,
                     std::move(load), file_label},
@@ -446,7 +481,8 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
                    std::move(path),
                    std::move(damage)},
                   materials.default_material,
-                  std::move(output)};
+                  std::move(output),
+                  std::move(static_run)};
 }
 
 CaseFile read_case_file(const std::string& path) {

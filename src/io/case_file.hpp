@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/indentation_case.hpp"
+#include "analysis/static_spec.hpp"
 #include "material/material.hpp"
 
 namespace si {
@@ -29,6 +30,9 @@ struct OutputSpec {
 struct CaseFile : IndentationCase {
   Material material;  // the top-level `material:`, the default ply material
   OutputSpec output;
+  // `static:` (shellindent static): the method and its steps; load.steps, the recorded nodes
+  // and the solver are the command's.
+  StaticSettings static_run;
 };
 
 // Reads and validates a case file. Every error is an input si::Error naming the file and, where

@@ -16,12 +16,16 @@ class ChartAssembly {
   // Keeps references to the assembler and the chart (same mesh and dof map).
   ChartAssembly(const Assembler& assembler, const ShellChart& chart);
 
-  // Force and tangent at x; reused if the last assembly was at x. An element's error
-  // propagates and leaves nothing cached.
-  const Assembly& at(const Eigen::VectorXd& x);
+  // Force and tangent at x, the prescribed translations at prescribed_scale times their values
+  // (ShellChart::states); reused if the last assembly was at the same x and scale. An element's
+  // error propagates and leaves nothing cached.
+  const Assembly& at(const Eigen::VectorXd& x, double prescribed_scale = 1.0);
   // Force and energy at x, the tangent only if the cache already holds x (output of a point
   // that is not where the solver stood).
-  const Assembly& force_at(const Eigen::VectorXd& x);
+  const Assembly& force_at(const Eigen::VectorXd& x, double prescribed_scale = 1.0);
+  // Drops the cached assembly: after the chart was re-based (ShellChart::rebase) the same x is
+  // another state.
+  void forget() { x_.resize(0); }
   // Node states of the last at() / force_at().
   const std::vector<NodeState>& states() const { return states_; }
   // Assemblies actually computed (cache misses), with and without the tangent.
@@ -29,13 +33,14 @@ class ChartAssembly {
   long force_assemblies() const { return force_assemblies_; }
 
  private:
-  const Assembly& assemble(const Eigen::VectorXd& x, bool tangent);
+  const Assembly& assemble(const Eigen::VectorXd& x, double prescribed_scale, bool tangent);
 
   const Assembler& assembler_;
   const ShellChart& chart_;
   Assembly assembly_;
   std::vector<NodeState> states_;
   Eigen::VectorXd x_;  // chart point of the cached assembly (empty: none)
+  double prescribed_scale_ = 1.0;
   bool has_tangent_ = false;
   long tangent_assemblies_ = 0;
   long force_assemblies_ = 0;

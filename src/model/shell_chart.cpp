@@ -32,7 +32,7 @@ Matrix3d so3_left_jacobian(const Vector3d& theta) {
 }
 
 ShellChart::ShellChart(const Mesh& mesh, const DofMap& dofs)
-    : mesh_(mesh), dofs_(dofs), reference_(reference_state(mesh)) {
+    : mesh_(mesh), dofs_(dofs), reference_(reference_state(mesh)), base_(reference_) {
   SI_REQUIRE(dofs.num_nodes() == mesh.num_nodes(), "shell chart: dof map and mesh differ");
   for (int n = 0; n < mesh.num_nodes(); ++n) {
     NodeRotation r{n, dofs.equation(DofMap::dof(n, 3)), dofs.equation(DofMap::dof(n, 4))};
@@ -41,7 +41,7 @@ ShellChart::ShellChart(const Mesh& mesh, const DofMap& dofs)
 }
 
 Vector3d ShellChart::theta(const Eigen::VectorXd& x, const NodeRotation& r) const {
-  const NodeState& ref = reference_[r.node];
+  const NodeState& ref = base_[r.node];
   const double a = r.eq_a >= 0 ? x[r.eq_a] : 0.0;
   const double b = r.eq_b >= 0 ? x[r.eq_b] : 0.0;
   return a * ref.v1 + b * ref.v2;
@@ -59,11 +59,35 @@ void ShellChart::states(const Eigen::VectorXd& x, double prescribed_scale,
     }
   for (const NodeRotation& r : rotations_) {
     const Matrix3d Q = rotation_matrix(theta(x, r));
+    const NodeState& base = base_[r.node];
     NodeState& s = out[r.node];
-    s.d = Q * s.d;
-    s.v1 = Q * s.v1;
-    s.v2 = Q * s.v2;
+    s.d = Q * base.d;
+    s.v1 = Q * base.v1;
+    s.v2 = Q * base.v2;
   }
+}
+
+int ShellChart::rebase(Eigen::VectorXd& x, double max_angle) {
+  SI_REQUIRE(x.size() == size(), "shell chart: coordinate vector of the wrong size");
+  int count = 0;
+  for (const NodeRotation& r : rotations_) {
+    const Vector3d th = theta(x, r);
+    if (!(th.norm() > max_angle)) continue;
+    const Matrix3d Q = rotation_matrix(th);
+    NodeState& base = base_[r.node];
+    base.d = Q * base.d;
+    base.v1 = Q * base.v1;
+    base.v2 = Q * base.v2;
+    if (r.eq_a >= 0) x[r.eq_a] = 0.0;
+    if (r.eq_b >= 0) x[r.eq_b] = 0.0;
+    ++count;
+  }
+  return count;
+}
+
+void ShellChart::set_base(std::vector<NodeState> base) {
+  SI_REQUIRE(base.size() == base_.size(), "shell chart: one base frame per node needed");
+  base_ = std::move(base);
 }
 
 Eigen::VectorXd ShellChart::coordinates(const std::vector<NodeState>& state) const {
@@ -76,15 +100,18 @@ Eigen::VectorXd ShellChart::coordinates(const std::vector<NodeState>& state) con
       if (eq >= 0) x[eq] = state[n].u[l];
     }
   for (const NodeRotation& r : rotations_) {
-    const Vector3d th = rotation_vector(r.node, state[r.node].d);
-    if (r.eq_a >= 0) x[r.eq_a] = th.dot(reference_[r.node].v1);
-    if (r.eq_b >= 0) x[r.eq_b] = th.dot(reference_[r.node].v2);
+    const Vector3d th = turn(r.node, base_[r.node].d, state[r.node].d);
+    if (r.eq_a >= 0) x[r.eq_a] = th.dot(base_[r.node].v1);
+    if (r.eq_b >= 0) x[r.eq_b] = th.dot(base_[r.node].v2);
   }
   return x;
 }
 
 Vector3d ShellChart::rotation_vector(int node, const Vector3d& d) const {
-  const Vector3d& D = reference_[node].d;
+  return turn(node, reference_[node].d, d);
+}
+
+Vector3d ShellChart::turn(int node, const Vector3d& D, const Vector3d& d) {
   const Vector3d axis = D.cross(d);
   const double angle = std::atan2(axis.norm(), D.dot(d));
   if (angle > M_PI - 1e-6)
@@ -94,7 +121,7 @@ Vector3d ShellChart::rotation_vector(int node, const Vector3d& d) const {
 
 void ShellChart::node_transform(const Eigen::VectorXd& x, const NodeRotation& rot, Matrix2d& T,
                                 Eigen::RowVector2d& drill) const {
-  const NodeState& ref = reference_[rot.node];
+  const NodeState& ref = base_[rot.node];
   const Vector3d th = theta(x, rot);
   const Matrix3d Q = rotation_matrix(th);
   const Vector3d d = Q * ref.d, v1 = Q * ref.v1, v2 = Q * ref.v2;

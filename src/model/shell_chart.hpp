@@ -2,10 +2,13 @@
 // library, which add vectors, can work on a shell whose rotations compose multiplicatively.
 //
 // Coordinates x (one per free dof, DofMap equation order): the translations u (mm) and, per
-// node, the components (a, b) of a rotation vector theta = a V1 + b V2 on the node's REFERENCE
-// axes; the node's frame is exp(skew(theta)) applied to its reference frame (D, V1, V2). This is
+// node, the components (a, b) of a rotation vector theta = a V1 + b V2 on the node's BASE axes;
+// the node's frame is exp(skew(theta)) applied to its base frame (D, V1, V2). The base is the
+// reference frame unless the chart was re-based (rebase()); with the reference base this is
 // exactly the state the element's linear mode reads back (shell_element.hpp) and the one
-// rotate_node(reference, a, b) gives, and it covers every director with |theta| < pi.
+// rotate_node(reference, a, b) gives. It covers every director with |theta| < pi, and is
+// singular at |theta| = pi (every theta of that length gives d = -D: T below loses rank), so a
+// path on which a node turns further re-bases the chart on the way (rebase()).
 //
 // The assembled tangent K is the derivative of the residual r (rotation rows = components of the
 // nodal moment on the CURRENT v1, v2) with respect to increments q about the current axes
@@ -16,7 +19,9 @@
 // increment (J = the left Jacobian of SO(3)), T = [v1 v2]^T J [V1 V2] is its projection on the
 // current axes, and D is the drilling part omega . d, which turns the current axes about d and
 // so changes the rotation rows' components: d r_1 = (omega.d) r_2, d r_2 = -(omega.d) r_1.
-// D vanishes at equilibrium; T is the identity at theta = 0.
+// T is the identity at theta = 0. The rows differentiated by D are those that are components of
+// a vector on the current axes: the INTERNAL force's; a load whose generalised forces on the
+// rotation rows are constant (NodalMoment, loads.hpp) has no such term, so r below is f_int.
 #pragma once
 
 #include <vector>
@@ -40,19 +45,27 @@ class ShellChart {
   void states(const Eigen::VectorXd& x, double prescribed_scale, std::vector<NodeState>& out) const;
 
   // The chart point of a state (inverse of states(); the drilling orientation of v1, v2 is
-  // ignored). Throws if a node has rotated by pi or more, or about its director.
+  // ignored). Throws if a node has rotated by pi or more from its base, or about its director.
   Eigen::VectorXd coordinates(const std::vector<NodeState>& state) const;
 
   // The rotation vector theta (|theta| < pi, normal to D) that takes a node's reference director
-  // D to d, and its reference frame; its components on (V1, V2) are the node's chart
-  // coordinates. Throws a numerical error at a turn of pi or more.
+  // D to d, and its reference frame; with the reference base its components on (V1, V2) are the
+  // node's chart coordinates. Throws a numerical error at a turn of pi or more.
   Vector3d rotation_vector(int node, const Vector3d& d) const;
   const NodeState& reference(int node) const { return reference_[node]; }
 
+  // Re-basing: every node whose chart rotation at x exceeds max_angle (rad) takes its frame at x
+  // as its new base, and its rotation coordinates in x become 0; the states at x are unchanged
+  // (the translations are not re-based: u stays the displacement from the reference). Returns
+  // the number of nodes re-based. base()/set_base() save and restore the base frames.
+  int rebase(Eigen::VectorXd& x, double max_angle);
+  const std::vector<NodeState>& base() const { return base_; }
+  void set_base(std::vector<NodeState> base);
+
   // In place: K (its first num_free() columns are the shell's free dofs, in equation order; it
   // may have more rows and columns, e.g. Lagrange multipliers) becomes K T(x), then the drilling
-  // term D(x, r) is added to the shell's rotation rows. r is the residual at x restricted to the
-  // free dofs (rotation rows on the current axes). The two rotation columns of a node must have
+  // term D(x, r) is added to the shell's rotation rows. r is the internal force at x restricted to
+  // the free dofs (rotation rows on the current axes). The two rotation columns of a node must have
   // the same sparsity pattern (true for assembled shell blocks), and the node's diagonal 2x2
   // rotation block must be in the pattern.
   // The 2x2 blocks T(x) of the transform, one per node with a free rotation component
@@ -72,6 +85,8 @@ class ShellChart {
     int eq_a = -1, eq_b = -1;  // equations of the rotation dofs, -1 if prescribed
   };
   Vector3d theta(const Eigen::VectorXd& x, const NodeRotation& r) const;
+  // The rotation vector normal to D that takes director D to d (node: for the error message).
+  static Vector3d turn(int node, const Vector3d& D, const Vector3d& d);
   // T of the header and the drilling row d^T W of one node at x.
   void node_transform(const Eigen::VectorXd& x, const NodeRotation& r, Matrix2d& T,
                       Eigen::RowVector2d& drill) const;
@@ -79,6 +94,7 @@ class ShellChart {
   const Mesh& mesh_;
   const DofMap& dofs_;
   std::vector<NodeState> reference_;
+  std::vector<NodeState> base_;  // the frames the rotation coordinates start from (rebase())
   std::vector<NodeRotation> rotations_;  // nodes with at least one free rotation dof
 };
 

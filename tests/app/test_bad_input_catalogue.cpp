@@ -374,6 +374,12 @@ std::vector<BadInput> case_file_rows() {
                  {"case.yaml:3", "load.force", "not a plausible value"}),
       static_row("LoadStepsZero", kHead + "load: {type: apex_force, force: 1 kN, steps: 0}\n",
                  {"case.yaml:3", "load.steps", ">= 1"}),
+      static_row("StaticStepWithNaturalMethod",
+                 kHead + "load: {type: apex_force, force: 1 kN}\nstatic: {step: 1 mm}\n",
+                 {"case.yaml:4", "static.step", "pseudo_arclength"}),
+      static_row("StaticMethodUnknown",
+                 kHead + "load: {type: apex_force, force: 1 kN}\nstatic: {method: riks}\n",
+                 {"case.yaml:4", "static.method", "riks"}),
       static_row("PressureWithAForceUnit", kHead + "load: {type: pressure, pressure: 1 kN}\n",
                  {"case.yaml:3", "load.pressure", "wrong unit"}),
   };

@@ -136,6 +136,50 @@ TEST(StaticCommand, NonConvergedRunExitsOneAndWritesWhereItStopped) {
   EXPECT_FALSE(j.at("failure").get<std::string>().empty());
 }
 
+// Snap-through from a case file: Sze's hinged cylindrical roof, h = 12.7 (K.Y. Sze, X.H. Liu,
+// S.H. Lo, Finite Elements in Analysis and Design 40 (2004) 1551-1569, sec. 3.8(a); data in
+// ../shared/benchmarks/nonlinear.md), the quarter model with 8 x 8 mitc4 elements, traced by
+// `static.method: pseudo_arclength` through both limit points of the load up to P/Pmax = 1.1.
+// Reference (Table 9(a), ABAQUS S4R): the first local maximum P/Pmax = 0.7421 and the local
+// minimum 0.1729 of the tabulated path; acceptance as in the verification test
+// (test_sze_hinged_roof.cpp): within 1 % of Pmax = 3000 N. Measured: 0.7411 and 0.1735.
+TEST(StaticCommand, SzeHingedRoofSnapsThroughBothLimitPoints_SzeLiuLo2004Sec38a) {
+  const fs::path dir = fresh_dir("static_roof");
+  const fs::path path = write_case(
+      dir,
+      "material: {type: isotropic, E: 3102.75 MPa, nu: 0.3}\n"
+      "laminate: {layup: \"[0]\", ply_thickness: 12.7 mm}\n"
+      "shell: {type: cylindrical_panel, radius: 2540 mm, length: 508 mm, angle: 11.459156 deg,\n"
+      "        edge: free}\n"
+      "mesh: {size_apex: 31.8 mm, symmetry: quarter}\n"
+      "supports: [{on: straight_edges, type: hinged}]\n"
+      "loads: [{type: point, on: apex, force: [0 N, 0 N, -3000 N]}]\n"
+      "static: {method: pseudo_arclength, step: 0.2 mm, step_max: 0.25 mm,\n"
+      "         parameter_weight: 10 mm, load_factor_max: 1.1}\n");
+  const auto r = run_cli("static '" + path.string() + "' --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "64 mitc4 elements")) << r.output;
+  const auto j = nlohmann::json::parse(read_text(dir / "out" / "static.json"));
+  EXPECT_EQ(j.at("status"), "completed");
+  EXPECT_EQ(j.at("method"), "pseudo_arclength");
+  const auto& events = j.at("events");
+  ASSERT_EQ(events.size(), 2u) << events.dump(1);
+  constexpr double kPmax = 3000;
+  for (int i = 0; i < 2; ++i) EXPECT_EQ(events[i].at("type"), "limit_point");
+  EXPECT_NEAR(events[0].at("load_factor").get<double>(), 0.7421, 0.01);
+  EXPECT_NEAR(events[1].at("load_factor").get<double>(), 0.1729, 0.01);
+  EXPECT_NEAR(events[0].at("force_N").get<double>(), 0.7421 * kPmax, 0.01 * kPmax);
+  // The path went down between the two and ends on load_factor_max on the far side of the snap
+  // (the table's stiffening branch: -W_C from 24 mm at P/Pmax 0.39 to 29.4 mm at 1.08).
+  const auto& steps = j.at("steps");
+  EXPECT_EQ(steps.back().at("load_factor").get<double>(), 1.1);
+  EXPECT_GT(steps.back().at("apex_deflection_mm").get<double>(), 25.0);
+  bool fell = false;
+  for (const auto& s : steps) fell = fell || s.at("load_factor").get<double>() < 0.2;
+  EXPECT_TRUE(fell);
+  EXPECT_TRUE(contains(r.output, "limit_point at load factor 0.74")) << r.output;
+}
+
 TEST(StaticCommand, OutputDirectoryThatIsAFileIsRefusedBeforeTheRun) {
   const fs::path dir = fresh_dir("static_outfile");
   const fs::path path = write_case(dir, tiny_case("[0]", "quarter", "linear"));

@@ -347,7 +347,7 @@ TEST(ContactVerification, IsotropicCap_ContactPressureHasTheMirrorSymmetries) {
 // directors map to within 1.3e-14) and of the isotropic section, so they should hold to
 // round-off too. Measured with mitc4: 5.0e-8 of the largest pressure (nonlinear; 8.7e-8 linear).
 // The source is the element, not the contact: a static apex force on the same cap without
-// contact (StaticSolver, linear) breaks the diagonal symmetry of w by 1.2e-7 with mitc4 and by
+// contact (run_static, linear) breaks the diagonal symmetry of w by 1.2e-7 with mitc4 and by
 // 2e-15 with mitc4-plain, so it is the EAS-4 membrane on warped elements that depends on the
 // element's orientation; with mitc4-plain the contact pressure holds every map to round-off
 // (next test). Kept at the exact tolerance and disabled (reported to the element's owner).

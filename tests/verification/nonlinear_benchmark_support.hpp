@@ -1,6 +1,6 @@
 // Shared set-up of the geometrically nonlinear shell benchmarks (Sze, Liu & Lo 2004; reference
 // data in ../shared/benchmarks/nonlinear.md): one load-controlled run of the production Newton
-// driver (analysis/static_solver.hpp) with the mitc4 element, and the comparison of recorded
+// driver (analysis/static_run.hpp) with the mitc4 element, and the comparison of recorded
 // displacements with a tabulated load-displacement path.
 #pragma once
 
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "../verification_record.hpp"
-#include "analysis/static_solver.hpp"
+#include "analysis/static_run.hpp"
 #include "model/plate_meshes.hpp"
 #include "model/supports.hpp"
 #include "shell/shell_element.hpp"
@@ -48,7 +48,7 @@ struct BenchmarkRun {
   }
 };
 
-// Runs StaticSolver (mitc4, nonlinear kinematics) from the reference state to load factor 1.
+// Runs run_static (mitc4, nonlinear kinematics) from the reference state to load factor 1.
 // The settings' record_nodes say which displacements each step keeps. One assembly thread:
 // ctest runs tests side by side (-j2), and the assembled values do not depend on the thread
 // count (assembler.hpp).
@@ -57,11 +57,13 @@ inline BenchmarkRun run_mitc4_nonlinear(const Mesh& mesh, const std::vector<Supp
                                         const StaticSettings& settings) {
   const DofMap dofs = make_dof_map(mesh, supports);
   const auto element = make_shell_element(ElementType::kMitc4);
-  StaticSolver solver(mesh, dofs, *element, law, Kinematics::kNonlinear, loads, settings, 1);
   BenchmarkRun run;
-  run.state = reference_state(mesh);
   const auto start = std::chrono::steady_clock::now();
-  run.steps = solver.solve(run.state);
+  StaticResult result =
+      run_static(mesh, dofs, *element, law, Kinematics::kNonlinear, loads, settings, {}, 1);
+  EXPECT_EQ(result.failure, "");
+  run.state = std::move(result.state);
+  run.steps = std::move(result.steps);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/static_solver.hpp"
+#include "analysis/static_run.hpp"
 #include "io/case_file.hpp"
 #include "model/assembler.hpp"
 #include "model/shell_model.hpp"
@@ -51,13 +51,15 @@ inline StaticRun run_static_case(const std::string& yaml) {
   run.model = build_shell_model(c);
   const ShellModel& m = run.model;
   const DofMap dofs = make_dof_map(m.mesh, m.supports, m.displacements);
-  StaticSettings settings;
+  StaticSettings settings = c.static_run;
   settings.steps = c.load->steps;
   settings.tolerance = 1e-10;
   settings.record_nodes = {m.apex_node()};
-  StaticSolver solver(m.mesh, dofs, *m.element, m.law, m.kinematics, m.loads, settings);
-  run.state = reference_state(m.mesh);
-  run.steps = solver.solve(run.state);
+  StaticResult result =
+      run_static(m.mesh, dofs, *m.element, m.law, m.kinematics, m.loads, settings);
+  EXPECT_EQ(result.failure, "");
+  run.state = std::move(result.state);
+  run.steps = std::move(result.steps);
   const Assembler assembler(m.mesh, dofs, *m.element, m.law, m.kinematics);
   Assembly a = assembler.make_assembly();
   assembler.assemble(run.state, {true, false}, a);

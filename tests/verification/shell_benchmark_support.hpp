@@ -1,8 +1,8 @@
 // Shared set-up of the linear shell verification benchmarks (tests/verification/): a model is a
-// mesh with supports, loads and a resultant law; it is solved by the production StaticSolver in
-// Kinematics::kLinear (one load level: K q = f). Distributed loads of a given surface traction
-// are turned into consistent nodal forces here (3 x 3 Gauss points on the bilinear map,
-// f_a = integral N_a t dA) and applied as per-node point loads on one-node sets.
+// mesh with supports, loads and a resultant law; it is solved by the production static run
+// (analysis/static_run.hpp) in Kinematics::kLinear (one load level: K q = f). Distributed loads of
+// a given surface traction are turned into consistent nodal forces here (3 x 3 Gauss points on the
+// bilinear map, f_a = integral N_a t dA) and applied as per-node point loads on one-node sets.
 // Reference data: ../shared/benchmarks/linear.md (copied into each test with its source).
 #pragma once
 
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/static_solver.hpp"
+#include "analysis/static_run.hpp"
 #include "model/assembler.hpp"
 #include "model/loads.hpp"
 #include "model/mesh.hpp"
@@ -79,7 +79,7 @@ inline void add_surface_traction(BenchmarkModel& model, const Traction& traction
   }
 }
 
-// Solves the model with the production linear path: supports -> dof map, StaticSolver with
+// Solves the model with the production linear path: supports -> dof map, run_static with
 // Kinematics::kLinear and one load level.
 inline BenchmarkSolution solve_linear(const BenchmarkModel& model,
                                       ElementType element_type = ElementType::kMitc4) {
@@ -88,11 +88,12 @@ inline BenchmarkSolution solve_linear(const BenchmarkModel& model,
   const DofMap dofs = make_dof_map(model.mesh, model.supports);
   StaticSettings settings;
   settings.steps = 1;
-  StaticSolver solver(model.mesh, dofs, *element, model.law, Kinematics::kLinear, model.loads,
-                      settings);
+  StaticResult result =
+      run_static(model.mesh, dofs, *element, model.law, Kinematics::kLinear, model.loads, settings);
+  EXPECT_EQ(result.failure, "");
   BenchmarkSolution out;
-  out.state = reference_state(model.mesh);
-  out.step = solver.solve(out.state).back();
+  out.state = std::move(result.state);
+  if (!result.steps.empty()) out.step = result.steps.back();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
