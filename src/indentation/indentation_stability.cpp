@@ -13,7 +13,9 @@
 // the gaps are linear: H = K). A mode v in chart coordinates is the shell part of z; the active
 // multipliers' part solves H v = A' mu in the least-squares sense (a null vector of the Jacobian
 // at a critical point), inactive multipliers stay 0.
+#include <memory>
 #include <utility>
+#include <vector>
 
 #include "continuation/cholmod_factorization.hpp"
 #include "continuation/stability_analysis.hpp"
@@ -45,6 +47,25 @@ SparseMatrix chart_transform(int n, const std::vector<ShellChart::RotationBlock>
   return T;
 }
 
+// Keeps the terms' caches (the gaps' Newton guesses) as they were before the analysis, which
+// evaluates the gaps again: the guesses steer the next solve's gap iterations at the level of
+// round-off, and the path must be the same with path.stability as without it.
+class CachesKept {
+ public:
+  explicit CachesKept(const std::vector<std::unique_ptr<ContactTerm>>& terms) : terms_(terms) {
+    for (const auto& t : terms_) kept_.push_back(t->caches());
+  }
+  ~CachesKept() {
+    for (std::size_t k = 0; k < terms_.size(); ++k) terms_[k]->restore_caches(std::move(kept_[k]));
+  }
+  CachesKept(const CachesKept&) = delete;
+  CachesKept& operator=(const CachesKept&) = delete;
+
+ private:
+  const std::vector<std::unique_ptr<ContactTerm>>& terms_;
+  std::vector<std::vector<double>> kept_;
+};
+
 }  // namespace
 
 bool IndentationProblem::provides_stability() const {
@@ -55,6 +76,7 @@ IndentationProblem::StabilityMatrices IndentationProblem::stability_matrices(con
                                                                              double h) {
   SI_REQUIRE(provides_stability(),
              "indentation: stability is not provided with a local contact law");
+  const CachesKept kept(parts_.terms);
   const int nf = shell_.size();
   cont::Vector r_free;
   const std::vector<NodeState>& states = shell_terms(z, h, r_free);
