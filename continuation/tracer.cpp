@@ -88,7 +88,12 @@ class Tracer {
   }
 
   bool analyse(const Vector& x, double p, const Vector& ref_x, double ref_p, TangentPoint& out) {
-    if (!analyse_point(problem_, bordered_, x, p, ref_x, ref_p, needs_, out)) return false;
+    return analyse(x, p, ref_x, ref_p, needs_, out);
+  }
+
+  bool analyse(const Vector& x, double p, const Vector& ref_x, double ref_p,
+               const AnalysisNeeds& needs, TangentPoint& out) {
+    if (!analyse_point(problem_, bordered_, x, p, ref_x, ref_p, needs, out)) return false;
     out.point.branch_id = branch_id_;
     return true;
   }
@@ -169,13 +174,15 @@ class Tracer {
     return true;
   }
 
-  SegmentSolver segment(const StepResult& step) {
-    return [this, &step](double sigma, TangentPoint& out) {
+  // Points inside the step, analysed as `needs` says (all of needs_ by default).
+  SegmentSolver segment(const StepResult& step) { return segment(step, needs_); }
+  SegmentSolver segment(const StepResult& step, const AnalysisNeeds& needs) {
+    return [this, &step, needs](double sigma, TangentPoint& out) {
       const TangentPoint& a = state_.current;
       Vector x;
       double p = 0.0;
       return stepper_.solve_on_segment(state_, step, sigma, x, p) &&
-             analyse(x, p, a.tangent_x, a.point.tangent_p, out);
+             analyse(x, p, a.tangent_x, a.point.tangent_p, needs, out);
     };
   }
 
@@ -209,8 +216,14 @@ class Tracer {
     b.point.arclength = a.point.arclength + chord(a.point, b.point);
     const int index = steps() + 1;
     scales_.include(b.point);
+    // Only a stability change is located on the points' stability: the other events' points
+    // skip that analysis (half the cost of path.stability on a path with a contact event per
+    // step).
+    AnalysisNeeds without_stability = needs_;
+    without_stability.stability_modes = 0;
     const auto events = find_events(indicators_, branch_.monitor_names, a, b, step.sigma_end,
-                                    segment(step), settings_, index, bordered_, scales_);
+                                    {segment(step, without_stability), segment(step)}, settings_,
+                                    index, bordered_, scales_);
     branch_.points.push_back(b.point);
     branch_.events.insert(branch_.events.end(), events.begin(), events.end());
     state_.has_previous = true;

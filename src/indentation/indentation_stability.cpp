@@ -78,19 +78,25 @@ IndentationProblem::StabilityMatrices IndentationProblem::stability_matrices(con
              "indentation: stability is not provided with a local contact law");
   const CachesKept kept(parts_.terms);
   const int nf = shell_.size();
-  cont::Vector r_free;
-  const std::vector<NodeState>& states = shell_terms(z, h, r_free);
-  // The Jacobian as factorize() assembles it, in a copy: the solver may still read jacobian_.
-  SparseMatrix J = jacobian_;
-  const SparseMatrix& K = shell_.tangent(z.head(nf));
-  std::fill(J.valuePtr(), J.valuePtr() + J.nonZeros(), 0.0);
-  for (int k = 0; k < K.nonZeros(); ++k) J.valuePtr()[k_to_j_[k]] = K.valuePtr()[k];
-  const TermPoint p{z, h, states};
-  for (const auto& t : parts_.terms) t->add_jacobian(p, J.valuePtr(), nullptr);
-  const SparseMatrix T = chart_transform(nf, shell_.to_chart(z.head(nf), r_free, J));
+  SparseMatrix J;  // assembled here unless factorize() was at this very point
+  SparseMatrix T;
+  if (factored_ && factored_->h == h && factored_->z.size() == z.size() && factored_->z == z) {
+    T = chart_transform(nf, factored_->rotations);
+  } else {
+    cont::Vector r_free;
+    const std::vector<NodeState>& states = shell_terms(z, h, r_free);
+    // The Jacobian as factorize() assembles it, in a copy: the solver may still read jacobian_.
+    J = jacobian_;
+    const SparseMatrix& K = shell_.tangent(z.head(nf));
+    std::fill(J.valuePtr(), J.valuePtr() + J.nonZeros(), 0.0);
+    for (int k = 0; k < K.nonZeros(); ++k) J.valuePtr()[k_to_j_[k]] = K.valuePtr()[k];
+    const TermPoint p{z, h, states};
+    for (const auto& t : parts_.terms) t->add_jacobian(p, J.valuePtr(), nullptr);
+    T = chart_transform(nf, shell_.to_chart(z.head(nf), r_free, J));
+  }
 
   StabilityMatrices m;
-  const SparseMatrix Jxx = J.topLeftCorner(nf, nf);
+  const SparseMatrix Jxx = (J.size() > 0 ? J : jacobian_).topLeftCorner(nf, nf);
   const SparseMatrix H = SparseMatrix(T.transpose()) * Jxx;
   const SparseMatrix Ht = H.transpose();
   m.H = 0.5 * (H + Ht);
