@@ -254,6 +254,19 @@ class Tracer {
     return true;
   }
 
+  // The old point's stability on `to`, the same point grown (its modes, of the old size, are
+  // dropped: they serve only the location of a change from this point on, which analyses its
+  // points afresh).
+  static void keep_stability(const Point& from, TangentPoint& to) {
+    Point& p = to.point;
+    p.negative_eigenvalues = from.negative_eigenvalues;
+    p.zero_eigenvalues = from.zero_eigenvalues;
+    p.stable = from.stable;
+    p.eigenvalues = from.eigenvalues;
+    p.lowest_eigenvalue = from.lowest_eigenvalue;
+    to.modes.clear();
+  }
+
   // The problem may grow (Problem::adapt); the point is then re-solved at the same p, and that
   // re-solved point replaces the accepted one in the branch (the one before the growth need not
   // solve the grown problem: e.g. a node outside a contact candidate set may penetrate). Repeated
@@ -262,17 +275,26 @@ class Tracer {
     Vector x = state_.current.point.x;
     const double p = state_.current.point.p;
     bool adapted = false;
+    // Whether every re-solve left x as the growth laid it out: the old point with its new
+    // unknowns zero (e.g. contact candidates added clear of the shell, no force). Then the
+    // point is the old one and so is its stability, which is copied rather than computed again.
+    bool moved = false;
     for (int round = 0; round < kMaxAdaptRounds && problem_.adapt(x, p); ++round) {
       adapted = true;
+      const Vector grown = x;
       const NewtonResult r = solve_at(problem_, x, p, settings_.newton);
       if (!r.converged)
         return finish(Status::kStepTooSmall, "no solution after Problem::adapt: " + r.reason);
+      moved = moved || x != grown;
     }
     if (!adapted) return true;
     const Point old = state_.current.point;
     const double sign_p = old.tangent_p != 0.0 ? old.tangent_p : settings_.direction;
-    if (!analyse(x, p, Vector(), sign_p, state_.current))
+    AnalysisNeeds needs = needs_;
+    if (!moved) needs.stability_modes = 0;
+    if (!analyse(x, p, Vector(), sign_p, needs, state_.current))
       return finish(Status::kStepTooSmall, "the Jacobian cannot be factored after Problem::adapt");
+    if (!moved && needs_.stability_modes > 0) keep_stability(old, state_.current);
     state_.current.point.newton_iterations = old.newton_iterations;
     state_.current.point.step = old.step;
     state_.current.point.arclength = old.arclength;
