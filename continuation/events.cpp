@@ -173,7 +173,7 @@ Event event_at(EventType type, const Indicator& indicator,
 
 std::vector<Event> find_events(const std::vector<Indicator>& indicators,
                                const std::vector<std::string>& monitor_names, const TangentPoint& a,
-                               const TangentPoint& b, double sigma_b, const SegmentSolver& solve,
+                               const TangentPoint& b, double sigma_b, const SegmentSolvers& solve,
                                const Settings& settings, int step, BorderedSolver& metric,
                                const CurveScales& scales) {
   const SegmentPoint start{0.0, a};
@@ -182,11 +182,11 @@ std::vector<Event> find_events(const std::vector<Indicator>& indicators,
   for (const auto& ind : indicators) {
     std::vector<Event> found;
     if (ind.type == EventType::kStabilityChange)
-      found = stability_events(ind, start, end, solve, settings);
+      found = stability_events(ind, start, end, solve.with_stability, settings);
     else if (is_feature(ind.type))
-      found = feature_events(ind, monitor_names, start, end, solve, settings, scales);
+      found = feature_events(ind, monitor_names, start, end, solve.plain, settings, scales);
     else
-      found = simple_events(ind, monitor_names, start, end, solve, settings);
+      found = simple_events(ind, monitor_names, start, end, solve.plain, settings);
     for (auto& event : found) {
       event.step = step;
       const Vector dx = event.x - a.point.x;

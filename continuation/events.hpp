@@ -59,11 +59,19 @@ struct CurveScales {
 Event event_at(EventType type, const Indicator& indicator,
                const std::vector<std::string>& monitor_names, const TangentPoint& at);
 
+// The solvers of the points inside a step: `plain` for every event but a stability change, whose
+// location needs each point's stability (`with_stability`; the same as plain when the
+// continuation computes none).
+struct SegmentSolvers {
+  SegmentSolver plain;
+  SegmentSolver with_stability;
+};
+
 // Events whose indicators change between a and b (b at local coordinate sigma_b), located,
 // tagged with `step` (the index b will have in the branch) and sorted by position.
 std::vector<Event> find_events(const std::vector<Indicator>& indicators,
                                const std::vector<std::string>& monitor_names, const TangentPoint& a,
-                               const TangentPoint& b, double sigma_b, const SegmentSolver& solve,
+                               const TangentPoint& b, double sigma_b, const SegmentSolvers& solve,
                                const Settings& settings, int step, BorderedSolver& metric,
                                const CurveScales& scales);
 

@@ -60,7 +60,7 @@ bool nearest(const SymmetricFactorization& factorization, int k, const EigenOpti
              Vector& values, Matrix& vectors) {
   const auto n = factorization.rows();
   ShiftSolve op(factorization);
-  const Eigen::Index ncv = std::min<Eigen::Index>(n, std::max(2 * k + 1, 20));
+  const Eigen::Index ncv = std::min<Eigen::Index>(n, std::max(2 * k + 1, options.subspace));
   Spectra::SymEigsShiftSolver<ShiftSolve> solver(op, k, ncv, factorization.shift());
   solver.init();
   try {

@@ -88,7 +88,12 @@ class Tracer {
   }
 
   bool analyse(const Vector& x, double p, const Vector& ref_x, double ref_p, TangentPoint& out) {
-    if (!analyse_point(problem_, bordered_, x, p, ref_x, ref_p, needs_, out)) return false;
+    return analyse(x, p, ref_x, ref_p, needs_, out);
+  }
+
+  bool analyse(const Vector& x, double p, const Vector& ref_x, double ref_p,
+               const AnalysisNeeds& needs, TangentPoint& out) {
+    if (!analyse_point(problem_, bordered_, x, p, ref_x, ref_p, needs, out)) return false;
     out.point.branch_id = branch_id_;
     return true;
   }
@@ -169,13 +174,15 @@ class Tracer {
     return true;
   }
 
-  SegmentSolver segment(const StepResult& step) {
-    return [this, &step](double sigma, TangentPoint& out) {
+  // Points inside the step, analysed as `needs` says (all of needs_ by default).
+  SegmentSolver segment(const StepResult& step) { return segment(step, needs_); }
+  SegmentSolver segment(const StepResult& step, const AnalysisNeeds& needs) {
+    return [this, &step, needs](double sigma, TangentPoint& out) {
       const TangentPoint& a = state_.current;
       Vector x;
       double p = 0.0;
       return stepper_.solve_on_segment(state_, step, sigma, x, p) &&
-             analyse(x, p, a.tangent_x, a.point.tangent_p, out);
+             analyse(x, p, a.tangent_x, a.point.tangent_p, needs, out);
     };
   }
 
@@ -226,8 +233,14 @@ class Tracer {
     b.point.arclength = a.point.arclength + chord(a.point, b.point);
     const int index = steps() + 1;
     scales_.include(b.point);
+    // Only a stability change is located on the points' stability: the other events' points
+    // skip that analysis (half the cost of path.stability on a path with a contact event per
+    // step).
+    AnalysisNeeds without_stability = needs_;
+    without_stability.stability_modes = 0;
     const auto events = find_events(indicators_, branch_.monitor_names, a, b, step.sigma_end,
-                                    segment(step), settings_, index, bordered_, scales_);
+                                    {segment(step, without_stability), segment(step)}, settings_,
+                                    index, bordered_, scales_);
     branch_.points.push_back(b.point);
     branch_.events.insert(branch_.events.end(), events.begin(), events.end());
     state_.has_previous = true;
@@ -258,6 +271,19 @@ class Tracer {
     return true;
   }
 
+  // The old point's stability on `to`, the same point grown (its modes, of the old size, are
+  // dropped: they serve only the location of a change from this point on, which analyses its
+  // points afresh).
+  static void keep_stability(const Point& from, TangentPoint& to) {
+    Point& p = to.point;
+    p.negative_eigenvalues = from.negative_eigenvalues;
+    p.zero_eigenvalues = from.zero_eigenvalues;
+    p.stable = from.stable;
+    p.eigenvalues = from.eigenvalues;
+    p.lowest_eigenvalue = from.lowest_eigenvalue;
+    to.modes.clear();
+  }
+
   // The problem may grow (Problem::adapt); the point is then re-solved at the same p, and that
   // re-solved point replaces the accepted one in the branch (the one before the growth need not
   // solve the grown problem: e.g. a node outside a contact candidate set may penetrate). Repeated
@@ -266,17 +292,26 @@ class Tracer {
     Vector x = state_.current.point.x;
     const double p = state_.current.point.p;
     bool adapted = false;
+    // Whether every re-solve left x as the growth laid it out: the old point with its new
+    // unknowns zero (e.g. contact candidates added clear of the shell, no force). Then the
+    // point is the old one and so is its stability, which is copied rather than computed again.
+    bool moved = false;
     for (int round = 0; round < kMaxAdaptRounds && problem_.adapt(x, p); ++round) {
       adapted = true;
+      const Vector grown = x;
       const NewtonResult r = solve_at(problem_, x, p, settings_.newton);
       if (!r.converged)
         return finish(Status::kStepTooSmall, "no solution after Problem::adapt: " + r.reason);
+      moved = moved || x != grown;
     }
     if (!adapted) return true;
     const Point old = state_.current.point;
     const double sign_p = old.tangent_p != 0.0 ? old.tangent_p : settings_.direction;
-    if (!analyse(x, p, Vector(), sign_p, state_.current))
+    AnalysisNeeds needs = needs_;
+    if (!moved) needs.stability_modes = 0;
+    if (!analyse(x, p, Vector(), sign_p, needs, state_.current))
       return finish(Status::kStepTooSmall, "the Jacobian cannot be factored after Problem::adapt");
+    if (!moved && needs_.stability_modes > 0) keep_stability(old, state_.current);
     state_.current.point.newton_iterations = old.newton_iterations;
     state_.current.point.step = old.step;
     state_.current.point.arclength = old.arclength;

@@ -82,6 +82,10 @@ class ContactTerm {
   // Drops what one solve hands the next (e.g. Newton guesses), so that a resumed run, which starts
   // without them, repeats the uninterrupted one bit for bit (cont::Problem::reset_solver_caches).
   virtual void reset_caches() {}
+  // What reset_caches() would drop, to be put back after a computation off the path (the
+  // stability analysis re-evaluates the gaps): the path is then the same with it as without.
+  virtual std::vector<double> caches() const { return {}; }
+  virtual void restore_caches(std::vector<double>) {}
   // After an accepted point: grows the term (new unknowns appended to its block, zero). True if
   // its size changed; the problem then lays z out again.
   virtual bool adapt(const TermPoint&) { return false; }

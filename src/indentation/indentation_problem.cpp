@@ -72,6 +72,7 @@ void IndentationProblem::build_pattern() {
     for (int k = K.outerIndexPtr()[j]; k < K.outerIndexPtr()[j + 1]; ++k)
       k_to_j_[k] = value_slot(jacobian_, K.innerIndexPtr()[k], j);
   for (const auto& term : parts_.terms) term->locate(jacobian_);
+  factored_.reset();
   solver_->pattern_changed();
 }
 
@@ -138,6 +139,7 @@ bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector&
 bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   ++counters_.factorizations;
   const int nf = shell_.size();
+  factored_.reset();
   cont::Vector r_free;
   const std::vector<NodeState>* states = nullptr;
   try {
@@ -162,6 +164,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
   }
+  factored_.reset(new FactoredPoint{z, h, rotations});
   return true;
 }
 

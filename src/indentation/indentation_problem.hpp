@@ -164,6 +164,15 @@ class IndentationProblem : public cont::Problem {
   std::shared_ptr<const StateProbe> probe_;
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
+  // Where jacobian_ was last assembled and factored, and its chart's rotation blocks: the
+  // continuation factors at each converged point before it asks for its stability, which then
+  // reads this Jacobian instead of assembling the same one again (indentation_stability.cpp).
+  struct FactoredPoint {
+    cont::Vector z;
+    double h = 0;
+    std::vector<ShellChart::RotationBlock> rotations;
+  };
+  std::unique_ptr<FactoredPoint> factored_;
   IndentationCounters counters_;
   // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.
   cont::Vector cached_z_;

@@ -13,7 +13,9 @@
 // the gaps are linear: H = K). A mode v in chart coordinates is the shell part of z; the active
 // multipliers' part solves H v = A' mu in the least-squares sense (a null vector of the Jacobian
 // at a critical point), inactive multipliers stay 0.
+#include <memory>
 #include <utility>
+#include <vector>
 
 #include "continuation/cholmod_factorization.hpp"
 #include "continuation/stability_analysis.hpp"
@@ -45,6 +47,25 @@ SparseMatrix chart_transform(int n, const std::vector<ShellChart::RotationBlock>
   return T;
 }
 
+// Keeps the terms' caches (the gaps' Newton guesses) as they were before the analysis, which
+// evaluates the gaps again: the guesses steer the next solve's gap iterations at the level of
+// round-off, and the path must be the same with path.stability as without it.
+class CachesKept {
+ public:
+  explicit CachesKept(const std::vector<std::unique_ptr<ContactTerm>>& terms) : terms_(terms) {
+    for (const auto& t : terms_) kept_.push_back(t->caches());
+  }
+  ~CachesKept() {
+    for (std::size_t k = 0; k < terms_.size(); ++k) terms_[k]->restore_caches(std::move(kept_[k]));
+  }
+  CachesKept(const CachesKept&) = delete;
+  CachesKept& operator=(const CachesKept&) = delete;
+
+ private:
+  const std::vector<std::unique_ptr<ContactTerm>>& terms_;
+  std::vector<std::vector<double>> kept_;
+};
+
 }  // namespace
 
 bool IndentationProblem::provides_stability() const {
@@ -55,20 +76,27 @@ IndentationProblem::StabilityMatrices IndentationProblem::stability_matrices(con
                                                                              double h) {
   SI_REQUIRE(provides_stability(),
              "indentation: stability is not provided with a local contact law");
+  const CachesKept kept(parts_.terms);
   const int nf = shell_.size();
-  cont::Vector r_free;
-  const std::vector<NodeState>& states = shell_terms(z, h, r_free);
-  // The Jacobian as factorize() assembles it, in a copy: the solver may still read jacobian_.
-  SparseMatrix J = jacobian_;
-  const SparseMatrix& K = shell_.tangent(z.head(nf));
-  std::fill(J.valuePtr(), J.valuePtr() + J.nonZeros(), 0.0);
-  for (int k = 0; k < K.nonZeros(); ++k) J.valuePtr()[k_to_j_[k]] = K.valuePtr()[k];
-  const TermPoint p{z, h, states};
-  for (const auto& t : parts_.terms) t->add_jacobian(p, J.valuePtr(), nullptr);
-  const SparseMatrix T = chart_transform(nf, shell_.to_chart(z.head(nf), r_free, J));
+  SparseMatrix J;  // assembled here unless factorize() was at this very point
+  SparseMatrix T;
+  if (factored_ && factored_->h == h && factored_->z.size() == z.size() && factored_->z == z) {
+    T = chart_transform(nf, factored_->rotations);
+  } else {
+    cont::Vector r_free;
+    const std::vector<NodeState>& states = shell_terms(z, h, r_free);
+    // The Jacobian as factorize() assembles it, in a copy: the solver may still read jacobian_.
+    J = jacobian_;
+    const SparseMatrix& K = shell_.tangent(z.head(nf));
+    std::fill(J.valuePtr(), J.valuePtr() + J.nonZeros(), 0.0);
+    for (int k = 0; k < K.nonZeros(); ++k) J.valuePtr()[k_to_j_[k]] = K.valuePtr()[k];
+    const TermPoint p{z, h, states};
+    for (const auto& t : parts_.terms) t->add_jacobian(p, J.valuePtr(), nullptr);
+    T = chart_transform(nf, shell_.to_chart(z.head(nf), r_free, J));
+  }
 
   StabilityMatrices m;
-  const SparseMatrix Jxx = J.topLeftCorner(nf, nf);
+  const SparseMatrix Jxx = (J.size() > 0 ? J : jacobian_).topLeftCorner(nf, nf);
   const SparseMatrix H = SparseMatrix(T.transpose()) * Jxx;
   const SparseMatrix Ht = H.transpose();
   m.H = 0.5 * (H + Ht);

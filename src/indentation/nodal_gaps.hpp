@@ -7,6 +7,7 @@
 // preconditioned Krylov solver can take them (contact_jacobian_solver.hpp).
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "indentation/contact_rows.hpp"
@@ -30,6 +31,8 @@ class NodalGaps final : public ContactRows {
   double pressure_area(int i) const override;
   void candidates_changed(bool appended) override;
   void reset_caches() override;
+  std::vector<double> caches() const override { return touch_guess_; }
+  void restore_caches(std::vector<double> guesses) override { touch_guess_ = std::move(guesses); }
   // Candidate i's gap at the face depth; a miss is a far gap. Keeps s(p) as the next guess.
   NodeGap gap(int i, const std::vector<NodeState>& s, double depth, bool derivative) const;
 

@@ -60,6 +60,37 @@ TEST(PathStability, OffByDefault_NothingComputedNoColumns) {
     EXPECT_FALSE(path_column(col).stability) << column_name(col);
 }
 
+// The analysis evaluates the gaps again, whose Newton guesses steer the next solve at round-off
+// level: they are kept (IndentationProblem::stability_matrices), so the path with stability is
+// the path without it, bit for bit (every column but the stability ones, and every event).
+TEST(PathStability, PathIdenticalWithAndWithout_BitForBit) {
+  for (PathMethod method : {PathMethod::kPseudoArclength, PathMethod::kNatural}) {
+    CaseFile c = coarse_cap_path_case("[0/0]2S", method, 3.0, 0.25, 0.5);
+    IndentationSetup plain(c, 1);
+    c.path.stability = true;
+    IndentationSetup analysed(c, 1);
+    const PathResult a = run_indentation_path(plain);
+    const PathResult b = run_indentation_path(analysed);
+    ASSERT_TRUE(a.completed && b.completed) << a.reason << b.reason;
+    ASSERT_EQ(a.points.size(), b.points.size());
+    for (std::size_t i = 0; i < a.points.size(); ++i) {
+      const std::vector<double> va = path_point_values(a.points[i], base_columns());
+      const std::vector<double> vb = path_point_values(b.points[i], base_columns());
+      for (std::size_t k = 0; k < va.size(); ++k) {
+        if (std::isnan(va[k]) && std::isnan(vb[k])) continue;
+        EXPECT_EQ(va[k], vb[k]) << column_name(base_columns()[k]) << " at point " << i;
+      }
+    }
+    ASSERT_EQ(a.events.size(), b.events.size() - static_cast<std::size_t>(stability_events(b)));
+    for (std::size_t i = 0, j = 0; j < b.events.size(); ++j) {
+      if (b.events[j].type == cont::EventType::kStabilityChange) continue;
+      EXPECT_EQ(a.events[i].p, b.events[j].p) << a.events[i].name;
+      EXPECT_EQ(a.events[i].type, b.events[j].type);
+      ++i;
+    }
+  }
+}
+
 // The depth grids analyse each point themselves: the linear path (K positive definite on any
 // contact set) is stable at every depth, its lowest eigenvalue the problem's own at that point.
 TEST(PathStability, LinearGridPointsAnalysed) {

@@ -112,6 +112,29 @@ TEST(IndentationStability, NonlinearHessianSymmetricAtConvergedPoint) {
   EXPECT_GT(p.stability_matrices(off, h).asymmetry, 100 * m.asymmetry);
 }
 
+// After factorize() at the point (what the continuation does before it asks), the analysis reads
+// the factored Jacobian instead of assembling it again: the same H and A as assembled afresh
+// (after a factorization elsewhere), to the round-off of the gaps' Newton guesses.
+TEST(IndentationStability, FactoredJacobianReused_SameMatricesAsAssembled) {
+  IndentationFixture f(coarse_cap_case("nonlinear", "[0/90]2S", "quarter"));
+  IndentationProblem& p = *f.problem;
+  const double h = 1.5;
+  const cont::Vector z = converged(p, h, 3);
+  cont::Vector off = z;
+  off.head(p.num_shell_unknowns()).array() += 1e-3;
+  ASSERT_TRUE(p.factorize(off, h));
+  const IndentationProblem::StabilityMatrices assembled = p.stability_matrices(z, h);
+  ASSERT_TRUE(p.factorize(z, h));
+  const IndentationProblem::StabilityMatrices reused = p.stability_matrices(z, h);
+  EXPECT_LT(SparseMatrix(reused.H - assembled.H).norm(), 1e-12 * assembled.H.norm());
+  EXPECT_LT(SparseMatrix(reused.A - assembled.A).norm(), 1e-12 * assembled.A.norm());
+  EXPECT_EQ(reused.multipliers, assembled.multipliers);
+  // Not the same matrix as the Jacobian factored elsewhere: the check above can fail.
+  ASSERT_TRUE(p.factorize(off, h));
+  EXPECT_GT(SparseMatrix(p.stability_matrices(off, h).H - assembled.H).norm(),
+            1e-6 * assembled.H.norm());
+}
+
 TEST(IndentationStability, RestrictedTangentMatchesDenseEigenSolve_NonlinearCap) {
   expect_library_matches_dense(coarse_cap_case("nonlinear", "[0/90]2S", "quarter"), 1.5, 3);
 }

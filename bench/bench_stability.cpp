@@ -1,0 +1,85 @@
+// Cost of path.stability (issue 15's budget: the stability of every converged point costs at most
+// 25 % of a 1e4-unknown cap path and 40 % at 1e5): the cap of bench/cases/cap_path_1e4.yaml
+// ([0/0]2S, full model, nonlinear, pseudo-arclength 0 to the given depth, 0.1 mm steps), run
+// twice through `shellindent run`'s driver in the same process, without and with
+// `path.stability: true`, the same run otherwise (the path is the same bit for bit: the points
+// are compared). Counters: both times (process CPU, so that other jobs on the machine count
+// less), their ratio, the points and the stability analyses' count. Arguments: (size_apex,
+// size_edge) in 0.01 mm, depth in 0.1 mm; 1e4: (92, 143), 1e5: (29, 46).
+// Run: cmake --build build-bench --target bench_stability && build-bench/bench/bench_stability
+// Figures: docs/performance.md, "Stability along the path".
+#include <benchmark/benchmark.h>
+
+#include <ctime>
+#include <string>
+
+#include "analysis/indentation_run.hpp"
+#include "io/case_file.hpp"
+
+namespace si {
+namespace {
+
+CaseFile paper_cap(const benchmark::State& st, bool stability) {
+  const std::string text =
+      "material: paper-carbon-epoxy\n"
+      "laminate: {layup: \"[0/0]2S\", ply_thickness: 0.475 mm}\n"
+      "shell: {type: spherical_cap, base_radius: 25 mm, radius: 80.9 mm, edge: clamped}\n"
+      "mesh: {element: mitc4, size_apex: " +
+      std::to_string(st.range(0) / 100.0) +
+      " mm, size_edge: " + std::to_string(st.range(1) / 100.0) +
+      " mm, refine_radius: 13 mm, symmetry: full}\n"
+      "kinematics: nonlinear\n"
+      "indenter: {shape: sphere, radius: 12.7 mm}\n"
+      "contact: {surface: outer, solver: kinsol}\n"
+      "path: {method: pseudo_arclength, depth_max: " +
+      std::to_string(st.range(2) / 10.0) +
+      " mm, step: 0.1 mm, stability: " + (stability ? "true" : "false") + "}\n";
+  return parse_case_file(text, "bench_stability");
+}
+
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+double seconds_of_path(IndentationSetup& s, PathResult& r) {
+  const double start = cpu_seconds();
+  r = run_indentation_path(s);
+  return cpu_seconds() - start;
+}
+
+void BM_StabilityOverhead(benchmark::State& st) {
+  for (auto _ : st) {
+    IndentationSetup plain(paper_cap(st, false), 1);
+    IndentationSetup analysed(paper_cap(st, true), 1);
+    PathResult a, b;
+    const double without = seconds_of_path(plain, a);
+    const double with = seconds_of_path(analysed, b);
+    st.counters["shell_unknowns"] = plain.problem->num_shell_unknowns();
+    st.counters["without_cpu_s"] = without;
+    st.counters["with_cpu_s"] = with;
+    st.counters["ratio"] = with / without;
+    st.counters["points"] = static_cast<double>(b.points.size());
+    bool same = a.points.size() == b.points.size();
+    for (std::size_t i = 0; same && i < a.points.size(); ++i)
+      same = a.points[i].state.force == b.points[i].state.force &&
+             a.points[i].state.depth == b.points[i].state.depth;
+    st.counters["same_path"] = same ? 1 : 0;
+    if (!a.completed || !b.completed) st.SkipWithError("a path stopped");
+  }
+}
+
+}  // namespace
+}  // namespace si
+
+BENCHMARK(si::BM_StabilityOverhead)
+    ->Args({92, 143, 100})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+// ~1e5 unknowns (about 4 minutes of CPU for the pair): build-bench/bench/bench_stability
+// --benchmark_filter=BM_StabilityOverhead/29
+BENCHMARK(si::BM_StabilityOverhead)
+    ->Args({29, 46, 20})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
