@@ -16,21 +16,17 @@
 
 #include "analysis/indentation_run.hpp"
 #include "io/case_file.hpp"
+#include "paper_cap_case.hpp"
 
 namespace si {
 namespace {
 
 CaseFile paper_cap(const benchmark::State& st, const std::string& kinematics, double depth) {
-  const std::string text =
-      "material: paper-carbon-epoxy\n"
-      "laminate: {layup: \"[0/0]2S\", ply_thickness: 0.475 mm}\n"
-      "shell: {type: spherical_cap, base_radius: 25 mm, radius: 80.9 mm, edge: clamped}\n"
-      "mesh: {element: mitc4, size_apex: " +
-      std::to_string(st.range(0) / 100.0) +
-      " mm, size_edge: " + std::to_string(st.range(1) / 100.0) + " mm, refine_radius: 13 mm}\n" +
-      "kinematics: " + kinematics + "\n" +
-      "path: {method: natural, depth_max: " + std::to_string(depth) + " mm, step: 0.1 mm}\n";
-  return parse_case_file(text, "bench_contact");
+  return parse_case_file(
+      bench::paper_cap_yaml(st, "",
+                            "kinematics: " + kinematics + "\npath: {method: natural, depth_max: " +
+                                std::to_string(depth) + " mm, step: 0.1 mm}\n"),
+      "bench_contact");
 }
 
 void report(benchmark::State& st, const IndentationSetup& s, const PathResult& r) {

@@ -3,38 +3,28 @@
 // model, ~1e4 shell unknowns at mesh (0.92, 1.43) mm), nonlinear kinematics, natural continuation
 // 0.1 mm steps to the given depth, run twice through `shellindent run`'s driver: without a
 // `damage:` section and with `damage: {criteria: [hashin, delamination]}` (refined recovery at
-// the contact candidates), the same run otherwise. Counters: both wall times, their ratio, the
+// the contact candidates), the same run otherwise. Counters: both CPU times, their ratio, the
 // monitored nodes, the onset depths. Arguments: (size_apex, size_edge) in 0.01 mm, depth in
 // 0.1 mm. Run: cmake --build build-bench --target bench_damage && build-bench/bench/bench_damage
 // Figures: docs/performance.md, "Damage monitors".
 #include <benchmark/benchmark.h>
 
-#include <chrono>
 #include <string>
 
 #include "analysis/indentation_run.hpp"
 #include "io/case_file.hpp"
+#include "paper_cap_case.hpp"
 
 namespace si {
 namespace {
 
 CaseFile paper_cap(const benchmark::State& st, bool damage) {
-  const std::string text =
-      "material: paper-carbon-epoxy\n"
-      "laminate: {layup: \"[0/0]2S\", ply_thickness: 0.475 mm}\n"
-      "shell: {type: spherical_cap, base_radius: 25 mm, radius: 80.9 mm, edge: clamped}\n"
-      "mesh: {element: mitc4, size_apex: " +
-      std::to_string(st.range(0) / 100.0) +
-      " mm, size_edge: " + std::to_string(st.range(1) / 100.0) + " mm, refine_radius: 13 mm}\n" +
-      "path: {method: natural, depth_max: " + std::to_string(st.range(2) / 10.0) +
-      " mm, step: 0.1 mm}\n" + (damage ? "damage: {criteria: [hashin, delamination]}\n" : "");
-  return parse_case_file(text, "bench_damage");
-}
-
-double seconds_of_path(IndentationSetup& s, PathResult& r) {
-  const auto start = std::chrono::steady_clock::now();
-  r = run_indentation_path(s);
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return parse_case_file(
+      bench::paper_cap_yaml(st, "",
+                            "path: {method: natural, depth_max: " +
+                                std::to_string(st.range(2) / 10.0) + " mm, step: 0.1 mm}\n" +
+                                (damage ? "damage: {criteria: [hashin, delamination]}\n" : "")),
+      "bench_damage");
 }
 
 void BM_DamageOverhead(benchmark::State& st) {
@@ -42,8 +32,8 @@ void BM_DamageOverhead(benchmark::State& st) {
     IndentationSetup plain(paper_cap(st, false), 1);
     IndentationSetup damaged(paper_cap(st, true), 1);
     PathResult a, b;
-    const double without = seconds_of_path(plain, a);
-    const double with = seconds_of_path(damaged, b);
+    const double without = bench::cpu_seconds_of_path(plain, a);
+    const double with = bench::cpu_seconds_of_path(damaged, b);
     st.counters["shell_unknowns"] = plain.problem->num_shell_unknowns();
     st.counters["monitored_nodes"] = static_cast<double>(damaged.damage->monitored().size());
     st.counters["without_s"] = without;

@@ -10,43 +10,25 @@
 // Figures: docs/performance.md, "Stability along the path".
 #include <benchmark/benchmark.h>
 
-#include <ctime>
 #include <string>
 
 #include "analysis/indentation_run.hpp"
 #include "io/case_file.hpp"
+#include "paper_cap_case.hpp"
 
 namespace si {
 namespace {
 
 CaseFile paper_cap(const benchmark::State& st, bool stability) {
-  const std::string text =
-      "material: paper-carbon-epoxy\n"
-      "laminate: {layup: \"[0/0]2S\", ply_thickness: 0.475 mm}\n"
-      "shell: {type: spherical_cap, base_radius: 25 mm, radius: 80.9 mm, edge: clamped}\n"
-      "mesh: {element: mitc4, size_apex: " +
-      std::to_string(st.range(0) / 100.0) +
-      " mm, size_edge: " + std::to_string(st.range(1) / 100.0) +
-      " mm, refine_radius: 13 mm, symmetry: full}\n"
-      "kinematics: nonlinear\n"
-      "indenter: {shape: sphere, radius: 12.7 mm}\n"
-      "contact: {surface: outer, solver: kinsol}\n"
-      "path: {method: pseudo_arclength, depth_max: " +
-      std::to_string(st.range(2) / 10.0) +
-      " mm, step: 0.1 mm, stability: " + (stability ? "true" : "false") + "}\n";
-  return parse_case_file(text, "bench_stability");
-}
-
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-double seconds_of_path(IndentationSetup& s, PathResult& r) {
-  const double start = cpu_seconds();
-  r = run_indentation_path(s);
-  return cpu_seconds() - start;
+  return parse_case_file(bench::paper_cap_yaml(st, ", symmetry: full",
+                                               "kinematics: nonlinear\n"
+                                               "indenter: {shape: sphere, radius: 12.7 mm}\n"
+                                               "contact: {surface: outer, solver: kinsol}\n"
+                                               "path: {method: pseudo_arclength, depth_max: " +
+                                                   std::to_string(st.range(2) / 10.0) +
+                                                   " mm, step: 0.1 mm, stability: " +
+                                                   (stability ? "true" : "false") + "}\n"),
+                         "bench_stability");
 }
 
 void BM_StabilityOverhead(benchmark::State& st) {
@@ -54,8 +36,8 @@ void BM_StabilityOverhead(benchmark::State& st) {
     IndentationSetup plain(paper_cap(st, false), 1);
     IndentationSetup analysed(paper_cap(st, true), 1);
     PathResult a, b;
-    const double without = seconds_of_path(plain, a);
-    const double with = seconds_of_path(analysed, b);
+    const double without = bench::cpu_seconds_of_path(plain, a);
+    const double with = bench::cpu_seconds_of_path(analysed, b);
     st.counters["shell_unknowns"] = plain.problem->num_shell_unknowns();
     st.counters["without_cpu_s"] = without;
     st.counters["with_cpu_s"] = with;

@@ -2,22 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "analysis/load_problem.hpp"
 #include "continuation/natural.hpp"
 #include "continuation/pseudo_arclength.hpp"
+#include "core/decimal_number.hpp"
 #include "core/error.hpp"
 
 namespace si {
 namespace {
-
-std::string number_text(double value) {
-  std::ostringstream os;
-  os.precision(10);
-  os << value;
-  return os.str();
-}
 
 // The continuation settings of a static run (static_run.hpp).
 cont::Settings continuation_settings(const StaticSettings& s, double force_scale) {
@@ -81,12 +74,12 @@ std::string failure_text(const cont::Branch& branch, const LoadProblem& problem,
   std::string text;
   if (branch.status == cont::Status::kMaxSteps) {
     text = "the run reached static.max_steps = " + std::to_string(settings.max_steps) +
-           " before load factor " + number_text(settings.load_factor_max);
+           " before load factor " + format_decimal(settings.load_factor_max);
   } else {
-    text = "no convergence beyond load factor " + number_text(last) + ": " + branch.reason;
+    text = "no convergence beyond load factor " + format_decimal(last) + ": " + branch.reason;
     if (!problem.last_error().empty()) text += " (last error: " + problem.last_error() + ")";
   }
-  return text + "; last converged load factor " + number_text(last);
+  return text + "; last converged load factor " + format_decimal(last);
 }
 
 }  // namespace

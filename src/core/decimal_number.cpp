@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 #include <string>
 
 namespace si {
@@ -54,6 +55,13 @@ std::optional<double> parse_decimal(std::string_view text) {
   const std::optional<double> v = parse_decimal_prefix(text, length);
   if (!v || length != text.size() || !std::isfinite(*v)) return std::nullopt;
   return v;
+}
+
+std::string format_decimal(double value, int digits) {
+  std::ostringstream os;
+  os.precision(digits);
+  os << value;
+  return os.str();
 }
 
 }  // namespace si

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace si {
@@ -26,5 +27,9 @@ bool is_hexadecimal(std::string_view text);
 
 // The whole of `text` as a finite decimal number, std::nullopt otherwise (no surrounding spaces).
 std::optional<double> parse_decimal(std::string_view text);
+
+// `value` with `digits` significant digits in the shortest of fixed and scientific notation
+// (as a stream writes it: "0.7", "1e-08"): numbers in messages that the reader above reads back.
+std::string format_decimal(double value, int digits = 10);
 
 }  // namespace si
