@@ -15,7 +15,10 @@ SECONDS_EACH="${1:-60}"
 BUILD_DIR="${2:-build-fuzz}"
 CXX_FUZZ="$(command -v clang++ || command -v clang++-14)"
 LAUNCHER=()
-if command -v ccache >/dev/null; then LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+if command -v ccache >/dev/null; then
+  LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR="$PWD"  # clones in other folders share the cache (scripts/setup.sh)
+fi
 cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_COMPILER="$CXX_FUZZ" "${LAUNCHER[@]}" \
   -DSHELLINDENT_FUZZ=ON -DSHELLINDENT_TESTS=OFF >/dev/null

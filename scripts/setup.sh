@@ -13,7 +13,9 @@ shift || true
 # python3-yaml: studies/sandwich.py reads its case file. pybind11-dev + python3-dev: the Python
 # module (python/, docs/python.md), built and tested with python3-numpy; python3-distributed:
 # its sweeps on a Dask cluster (shellindent.sweep, tested on a LocalCluster). clang +
-# libclang-rt-14-dev: libFuzzer for the fuzz targets (tests/fuzz/, scripts/fuzz.sh).
+# libclang-rt-14-dev: libFuzzer for the fuzz targets (tests/fuzz/, scripts/fuzz.sh). ccache: a
+# rebuild (another clone, another branch, CI after a session) compiles only what changed; the
+# paths are taken relative to the checkout (CCACHE_BASEDIR), so clones in other folders share it.
 PACKAGES=(
   cmake ninja-build g++ pkg-config clang-format
   libsundials-dev libeigen3-dev libsuitesparse-dev libopenblas0-pthread
@@ -22,6 +24,7 @@ PACKAGES=(
   python3 python3-matplotlib python3-numpy python3-yaml python3-dev pybind11-dev
   python3-distributed
   clang libclang-rt-14-dev
+  ccache
 )
 
 missing=()
@@ -45,10 +48,15 @@ fi
 
 GENERATOR=()
 if command -v ninja >/dev/null; then GENERATOR=(-G Ninja); fi
+LAUNCHER=()
+if command -v ccache >/dev/null; then
+  LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR="$PWD"
+fi
 if [[ ! -f "$BUILD_DIR/CMakeCache.txt" ]]; then
-  cmake -S . -B "$BUILD_DIR" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=Release "$@" >&2
+  cmake -S . -B "$BUILD_DIR" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=Release "${LAUNCHER[@]}" "$@" >&2
 else
-  cmake -S . -B "$BUILD_DIR" "$@" >/dev/null
+  cmake -S . -B "$BUILD_DIR" "${LAUNCHER[@]}" "$@" >/dev/null
 fi
 cmake --build "$BUILD_DIR" -j"$(nproc)" >&2
 echo "setup: built $BUILD_DIR/shellindent" >&2
