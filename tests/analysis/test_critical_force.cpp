@@ -118,13 +118,18 @@ int inflections(const PathResult& r) {
 }
 
 // The linear path (fast path, 0.1 mm grid to 10 mm): the old detector reported two k22
-// "inflections" (5.95 and 6.35 mm) where T_N and k22 are straight between contact changes.
+// "inflections" (5.95 and 6.35 mm) where T_N and k22 are straight between contact changes. Those
+// came from the roundoff of the solves, whose pattern depends on the machine's BLAS kernels (on
+// another processor the old detector saw none): that the old detector fails on roundoff is
+// asserted with fixed inputs by NoInflectionInsideAnExactlyLinearSegment; here only the answer.
 TEST(CriticalForce, LinearPathOfTheCapHasNone) {
   IndentationSetup s(cap_125("linear", 10.0), 1);
   const PathResult r = run_indentation_path(s);
   ASSERT_TRUE(r.completed) << r.reason;
-  EXPECT_TRUE(old_detector_reports(r.points, 2));
-  EXPECT_EQ(inflections(r), 0);
+  EXPECT_EQ(inflections(r), 0) << "the old detector "
+                               << (old_detector_reports(r.points, 2) ? "reports"
+                                                                     : "does not report")
+                               << " one on this machine";
 }
 
 // The nonlinear path to 2 mm (pseudo-arclength, the library's curve-feature detector): the old

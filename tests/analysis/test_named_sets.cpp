@@ -13,6 +13,7 @@
 #include "../verification/point_load_support.hpp"
 #include "model/mesh_quality.hpp"
 #include "model/shell_model.hpp"
+#include "test_paths.hpp"
 
 namespace si {
 namespace {

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "test_paths.hpp"
+
 namespace si::testing {
 
 namespace fs = std::filesystem;

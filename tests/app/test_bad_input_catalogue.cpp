@@ -22,6 +22,7 @@
 
 #include "cli_test_support.hpp"
 #include "io/output_lock.hpp"
+#include "test_paths.hpp"
 
 namespace si {
 namespace {

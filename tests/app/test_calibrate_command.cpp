@@ -27,6 +27,7 @@
 #include "io/case_overrides.hpp"
 #include "io/csv_table.hpp"
 #include "io/force_travel.hpp"
+#include "test_paths.hpp"
 
 extern char** environ;
 

@@ -19,6 +19,7 @@
 
 #include "cli_test_support.hpp"
 #include "io/path_results.hpp"
+#include "test_paths.hpp"
 
 namespace si {
 namespace {

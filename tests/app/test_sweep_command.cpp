@@ -12,6 +12,7 @@
 
 #include "cli_test_support.hpp"
 #include "io/csv_table.hpp"
+#include "test_paths.hpp"
 
 namespace si {
 namespace {

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "test_paths.hpp"
+
 namespace si::fit::testing {
 
 struct StrdProblem {

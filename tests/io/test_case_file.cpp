@@ -5,6 +5,7 @@
 #include <string>
 
 #include "io/material_reader.hpp"
+#include "test_paths.hpp"
 
 namespace si {
 namespace {

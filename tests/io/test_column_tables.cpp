@@ -14,6 +14,7 @@
 
 #include "analysis/path_columns.hpp"
 #include "core/error.hpp"
+#include "test_paths.hpp"
 
 namespace si {
 namespace {

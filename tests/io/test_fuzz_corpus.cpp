@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "io/case_file.hpp"
 #include "section/layup_notation.hpp"
+#include "test_paths.hpp"
 
 namespace si {
 namespace {

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "io/study_file.hpp"
+#include "test_paths.hpp"
 
 namespace si {
 namespace {

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "mesh_test_support.hpp"
+#include "test_paths.hpp"
 
 namespace si {
 namespace {
