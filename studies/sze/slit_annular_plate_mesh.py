@@ -2,13 +2,13 @@
 """Writes the mesh of Sze, Liu & Lo (2004) sec. 3.3, the slit annular plate, as a Gmsh 2.2 file.
 
 Sze et al. give the plate in consistent units (Ri = 6, Ro = 10, h = 0.03, E = 21e6, q = 0.8);
-the case file sze_3-3_slit_annular_plate.yaml reads them as inches, psi and lbf/in (E = 21e6 MPa
-is beyond the case file's plausible moduli), so the mesh is written in mm: Ri = 152.4, Ro = 254.
-Radial x circumferential quadrangles, numbered counter-clockwise about +z (the directors point
-to +z). The lips of the slit are the radial lines at angle 0 (clamped) and 360 deg - 1e-6 rad
-(loaded): 1.5e-4 mm (6e-6 in) apart at the inner edge, because shellindent refuses coincident
-nodes that are not merged (1e-6 rad is 1.3e-5 of an element's angle). Physical groups: curves `slit_fixed`, `slit_loaded`, points `A` (inner
-corner of the loaded lip) and `B` (outer corner), surface `plate`.
+the mesh is written with those lengths read as mm (the case file sze_3-3_slit_annular_plate.yaml
+scales E and q alike, which leaves the displacements unchanged). Radial x circumferential
+quadrangles, numbered counter-clockwise about +z (the directors point to +z). The lips of the
+slit are the radial lines at angle 0 (clamped) and 360 deg - 1e-6 rad (loaded): 6e-6 mm apart
+at the inner edge, because shellindent refuses coincident nodes that are not merged (1e-6 rad is
+1.3e-5 of an element's angle). Physical groups: curves `slit_fixed`, `slit_loaded`, points `A`
+(inner corner of the loaded lip) and `B` (outer corner), surface `plate`.
 
 Usage: /usr/bin/python3 studies/sze/slit_annular_plate_mesh.py N_RADIAL N_CIRC OUT.msh
 (the committed files: 6 80 slit_annular_plate_6x80.msh, 10 80 slit_annular_plate_10x80.msh).
@@ -16,8 +16,7 @@ Usage: /usr/bin/python3 studies/sze/slit_annular_plate_mesh.py N_RADIAL N_CIRC O
 import math
 import sys
 
-INCH = 25.4
-RI, RO = 6 * INCH, 10 * INCH
+RI, RO = 6.0, 10.0
 GAP_RAD = 1e-6
 
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
 #include <utility>
@@ -88,6 +89,32 @@ TEST(RunVtuOutput, NaturalGridGainsTheRequestedDepthsAndBinaryIsAppendedRaw) {
   EXPECT_TRUE(contains(csv, "\n0.5,")) << csv;
   EXPECT_TRUE(contains(csv, "\n0.6,")) << csv;
   EXPECT_TRUE(contains(csv, "\n0.75,")) << csv;
+}
+
+// A located event gets its file at its own point: max-stress onset in the [0/0]2S cap comes at
+// about 0.036 mm (matrix tension in the bottom ply under the apex; events.json's damage_onset,
+// located to 6e-10 mm). event_01.vtu carries the failure indices and is listed at the event's
+// depth between the start and the last point; the unlocated signature changes get none.
+TEST(RunVtuOutput, LocatedEventHasItsFileAtItsDepth) {
+  const fs::path dir = fresh_dir("run_vtu_event");
+  const fs::path c =
+      write_case(dir, cap_case("{depth_max: 0.3 mm, step: 0.1 mm}", "{vtu_every: 1000}",
+                               "damage: {criteria: [max_stress]}\n"));
+  const auto r = run_cli("run '" + c.string() + "' --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto events = nlohmann::json::parse(read_file(dir / "out" / "events.json"));
+  std::vector<double> located;
+  for (const auto& e : events)
+    if (e.at("located").get<bool>()) located.push_back(e.at("depth_mm").get<double>());
+  ASSERT_EQ(located.size(), 1u) << events.dump(1);
+  EXPECT_EQ(events[0].at("type"), "damage_onset");
+  const auto entries = pvd_entries(dir / "out" / "path.pvd");
+  ASSERT_EQ(entries.size(), 3u) << read_file(dir / "out" / "path.pvd");
+  EXPECT_EQ(entries[1].second, "event_01.vtu");
+  EXPECT_NEAR(entries[1].first, located[0], 1e-9);
+  EXPECT_NEAR(entries[2].first, 0.3, 1e-12);
+  EXPECT_TRUE(contains(read_file(dir / "out" / "event_01.vtu"), "max_stress_index_ply1"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "event_02.vtu"));
 }
 
 TEST(RunVtuOutput, MirrorOfAFullModelAndDepthsBeyondThePathAreRefused) {
