@@ -214,6 +214,10 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
     }
   }();
   for (const auto& w : m.warnings) err << "shellindent: warning: " << w << "\n";
+  StaticSettings settings = c.static_run;
+  settings.steps = c.load->steps;
+  settings.record_nodes = {m.apex_node()};
+  const RecordedSets sets = record_sets(c, m.mesh, text, settings);  // an unknown set: exit 2
   // The output directory is made (and checked, and locked) once the input is valid and before
   // the run, so that a long run cannot be lost to a bad --out at the end.
   const std::filesystem::path dir = o.out_dir.empty() ? c.output.dir : o.out_dir;
@@ -227,10 +231,6 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   const OutputLock lock(dir, dir_where);
 
   const DofMap dofs = make_dof_map(m.mesh, m.supports, m.displacements);
-  StaticSettings settings = c.static_run;
-  settings.steps = c.load->steps;
-  settings.record_nodes = {m.apex_node()};
-  const RecordedSets sets = record_sets(c, m.mesh, text, settings);
   const bool natural = settings.method == PathMethod::kNatural;
   err << "static: " << m.mesh.num_nodes() << " nodes, " << m.mesh.num_elements() << " "
       << m.element->name() << " elements, " << dofs.num_free() << " free dofs, "
