@@ -22,7 +22,7 @@ PACKAGES=(
   libnlopt-cxx-dev libspectra-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy python3-yaml python3-dev pybind11-dev
-  python3-distributed
+  python3-distributed python3-meshio
   clang libclang-rt-14-dev
   ccache
 )

@@ -53,7 +53,7 @@ FULL_FILTER = ":".join([
     "NonlinearShellBenchmarks.*", "ClampedPlateLinear.*", "PointLoads.*",
     "ClampedPlateSphere.*", "ContactVerification.*", "HertzDent.*", "LocalIndentation*",
     "AnisotropicHalfSpace.*", "LayerCompliance.*", "SphereOnLayer.*",
-    "ContPseudoArclength.*", "ContEvents.*", "SzeHingedRoof.*",
+    "ContPseudoArclength.*", "ContEvents.*", "SzeHingedRoof.*", "SzeCaseFiles.*",
     "NistLinear.*", "*NistNonlinear.*",
 ])
 

@@ -11,6 +11,7 @@
 
 #include "analysis/indentation_run.hpp"
 #include "app/interrupt_signals.hpp"
+#include "app/path_vtus.hpp"
 #include "app/thread_count.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -23,79 +24,10 @@
 #include "io/output_directory.hpp"
 #include "io/output_lock.hpp"
 #include "io/path_results.hpp"
-#include "io/result_fields.hpp"
 #include "io/spellings.hpp"
-#include "io/vtu_writer.hpp"
 
 namespace si {
 namespace {
-
-// The VTU of one point: resultants plus the contact pressure and force at every node, and any
-// `extra` fields.
-void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& s,
-                     const IndentationState& st, const cont::Vector& z,
-                     const VtuFields& extra = {}) {
-  const IndentationProblem& p = *s.problem;
-  const std::vector<NodeState> state = p.node_states(z);
-  VtuFields fields =
-      resultant_fields(s.model.mesh, p.assembler(), *s.model.element, s.model.law, state);
-  Eigen::VectorXd pressure = Eigen::VectorXd::Zero(s.model.mesh.num_nodes());
-  Eigen::VectorXd force = pressure;
-  for (std::size_t i = 0; i < st.nodes.size(); ++i) {
-    pressure[st.nodes[i]] = st.pressures[i];
-    force[st.nodes[i]] = st.multipliers[i];
-  }
-  fields.point_data["contact_pressure"] = pressure;
-  fields.point_data["contact_force"] = force;
-  add_damage_fields(s, st, z, fields);
-  for (const auto& [name, values] : extra.point_data) fields.point_data[name] = values;
-  write_vtu(file.string(), s.model.mesh, state, fields);
-}
-
-// A stability event's mode as a nodal field: the translations of the mode (its shell part, chart
-// coordinates), scaled so that the largest is 1 (a shape; its sign is Lanczos').
-Eigen::MatrixXd mode_translations(const IndentationProblem& p, const cont::Vector& mode,
-                                  int nodes) {
-  Eigen::MatrixXd u = Eigen::MatrixXd::Zero(nodes, 3);
-  for (int n = 0; n < nodes; ++n)
-    for (int l = 0; l < 3; ++l) {
-      const int eq = p.dofs().equation(DofMap::dof(n, l));
-      if (eq >= 0 && eq < mode.size()) u(n, l) = mode[eq];
-    }
-  const double largest = u.cwiseAbs().maxCoeff();
-  return largest > 0 ? Eigen::MatrixXd(u / largest) : u;
-}
-
-// One VTU per stability change (stability_NN.vtu, at the event's point, with its critical mode
-// as the point field `critical_mode`); returns the files' names. The problem may have grown its
-// candidate set since the event: the appended multipliers are zero at the event.
-std::vector<std::string> write_stability_vtus(const std::filesystem::path& dir, IndentationSetup& s,
-                                              const PathResult& r) {
-  std::vector<std::string> names;
-  IndentationProblem& p = *s.problem;
-  for (const cont::Event& e : r.events) {
-    if (e.type != cont::EventType::kStabilityChange || e.x.size() == 0 || e.x.size() > p.size())
-      continue;
-    cont::Vector z = cont::Vector::Zero(p.size());
-    z.head(e.x.size()) = e.x;
-    char name[32];
-    std::snprintf(name, sizeof name, "stability_%02d.vtu", static_cast<int>(names.size()) + 1);
-    VtuFields extra;
-    extra.point_data["critical_mode"] = mode_translations(p, e.mode, s.model.mesh.num_nodes());
-    write_point_vtu(dir / name, s, p.evaluate(z, e.p), z, extra);
-    names.push_back(name);
-  }
-  return names;
-}
-
-std::string pvd_text(const std::vector<std::pair<double, std::string>>& files) {
-  std::ostringstream os;
-  os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  for (const auto& [depth, name] : files)
-    os << "  <DataSet timestep=\"" << depth << "\" file=\"" << name << "\"/>\n";
-  os << "</Collection>\n</VTKFile>\n";
-  return os.str();
-}
 
 // The force-depth table on stdout; with a local contact law (contact.local) the local
 // indentation (path.csv's local_indent_mm) follows the apex deflection, the two parts of the
@@ -146,12 +78,6 @@ class Progress {
   bool tty_ = isatty(STDERR_FILENO) != 0;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
-
-std::string vtu_name(int index) {
-  char name[32];
-  std::snprintf(name, sizeof name, "path_%04d.vtu", index);
-  return name;
-}
 
 std::string case_text(const std::string& path) {
   std::ifstream in(path);
@@ -205,8 +131,7 @@ void check_same_case(const nlohmann::json& record, const CaseDigest& now, const 
 std::vector<std::string> write_path_files(const std::filesystem::path& dir,
                                           const OutputChoice& formats,
                                           const IndentationSetup& setup, const PathResult& r,
-                                          const std::vector<std::pair<double, std::string>>& vtus,
-                                          const std::string& damage_rows) {
+                                          const PathVtus& vtus, const std::string& damage_rows) {
   const PathSpec& path = setup.spec.path;
   std::vector<std::string> written;
   const bool arclength = r.method == RunMethod::kPseudoArclength;
@@ -231,7 +156,7 @@ std::vector<std::string> write_path_files(const std::filesystem::path& dir,
                       ", events.json");
   }
   if (!vtus.empty()) {
-    write_file_atomically((dir / "path.pvd").string(), pvd_text(vtus));
+    write_file_atomically((dir / "path.pvd").string(), vtus.pvd());
     written.push_back("path.pvd and " + std::to_string(vtus.size()) + " VTU files");
   }
   return written;
@@ -280,31 +205,23 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   const OutputChoice formats = output_choice(cf.output);
   const CaseDigest digest = case_digest(text);
   Progress progress(err, cf.path.depth_max);
-  std::vector<std::pair<double, std::string>> vtus;
+  PathVtus vtus(dir, cf.output, setup, formats.vtu);
   std::string damage_rows;  // damage_points.csv's rows so far (saved with the checkpoints)
   InterruptGuard guard;
   const PathCallback on_point = [&](const PathPoint& p, const cont::Vector& z) {
     progress.show(p);
     if (formats.csv) damage_rows += damage_points_rows(setup, p, z);
-    const int every = cf.output.vtu_every;
-    if (formats.vtu && every > 0 && p.index % every == 0) {
-      write_point_vtu(dir / vtu_name(p.index), setup, p.state, z);
-      vtus.emplace_back(p.state.depth, vtu_name(p.index));
-    }
+    vtus.at_point(setup, p, z);
     return !interrupted();
   };
   control.save_record = [&] {
-    nlohmann::json frames = nlohmann::json::array();
-    for (const auto& [depth, name] : vtus) frames.push_back({depth, name});
-    nlohmann::json record{{"case", digest.to_json()}, {"vtu", frames}};
+    nlohmann::json record{{"case", digest.to_json()}, {"vtu", vtus.record()}};
     if (setup.damage) record["damage_points"] = damage_rows;
     return record;
   };
   control.restore_record = [&](const nlohmann::json& record) {
     check_same_case(record, digest, cf.file, text, control.checkpoint);
-    vtus.clear();
-    for (const auto& f : record.value("vtu", nlohmann::json::array()))
-      vtus.emplace_back(f.at(0).get<double>(), f.at(1).get<std::string>());
+    vtus.restore(record.value("vtu", nlohmann::json::array()));
     damage_rows = record.value("damage_points", std::string());
   };
   PathResult r = run_indentation_path(setup, on_point, control);
@@ -313,19 +230,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   // stops a continuation; "stopped by the callback" tells a user nothing).
   if (r.status == RunStatus::kStopped && interrupted())
     r.reason = std::string("interrupted (") + interrupt_name() + ")";
-  // The last point always has its fields (vtu_every counts points: a 0-10 mm run's last VTU was
-  // at 6.22 mm).
-  if (formats.vtu && cf.output.vtu_every > 0 && !r.points.empty() &&
-      r.final_unknowns.size() == setup.problem->size()) {
-    const PathPoint& last = r.points.back();
-    const std::string name = vtu_name(last.index);
-    if (vtus.empty() || vtus.back().second != name) {
-      write_point_vtu(dir / name, setup,
-                      setup.problem->evaluate(r.final_unknowns, last.state.depth),
-                      r.final_unknowns);
-      vtus.emplace_back(last.state.depth, name);
-    }
-  }
+  const int event_files = vtus.after_run(setup, r);
 
   const bool local = setup.problem->local_law().kind != LocalLawKind::kNone;
   out << "Indentation of " << cf.file << " (" << run_method_name(r.method)
@@ -344,11 +249,8 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
           << " at depth " << e.p << " mm\n";
 
   std::vector<std::string> written = write_path_files(dir, formats, setup, r, vtus, damage_rows);
-  if (formats.vtu) {
-    const std::vector<std::string> modes = write_stability_vtus(dir, setup, r);
-    if (!modes.empty())
-      written.push_back(std::to_string(modes.size()) + " stability VTU file(s) (critical_mode)");
-  }
+  if (event_files > 0)
+    written.push_back(std::to_string(event_files) + " of them at located events (event_NN.vtu)");
   err << "wrote ";
   for (std::size_t i = 0; i < written.size(); ++i) err << (i ? ", " : "") << written[i];
   err << (written.empty() ? "nothing (output.formats)" : "") << "\n";

@@ -19,6 +19,7 @@
 #include "io/output_lock.hpp"
 #include "io/result_fields.hpp"
 #include "io/vtu_writer.hpp"
+#include "model/node_set.hpp"
 #include "model/shell_model.hpp"
 
 namespace si {
@@ -32,11 +33,53 @@ struct StaticRow {
   double energy = 0;      // N mm, strain energy
   double reaction = 0;    // N, sum of the support reactions along +z
   int iterations = 0;
+  std::vector<Vector3d> recorded;  // mm, the mean displacement of each static.record set
 };
 
-StaticRow make_row(const StepResult& r, double factor) {
-  return StaticRow{r.load_factor,     -factor * r.applied_force.z(), -r.displacements[0].z(),
-                   factor * r.energy, factor * r.reaction_force.z(), r.iterations};
+// static.record: the recorded sets' names and, for each, the positions of its nodes in
+// StepResult::displacements (after the apex, position 0).
+struct RecordedSets {
+  std::vector<std::string> names;
+  std::vector<std::vector<int>> positions;
+};
+
+StaticRow make_row(const StepResult& r, double factor, const RecordedSets& sets) {
+  StaticRow row{r.load_factor,
+                -factor * r.applied_force.z(),
+                -r.displacements[0].z(),
+                factor * r.energy,
+                factor * r.reaction_force.z(),
+                r.iterations,
+                {}};
+  for (const std::vector<int>& positions : sets.positions) {
+    Vector3d sum = Vector3d::Zero();
+    for (int i : positions) sum += r.displacements[i];
+    row.recorded.push_back(sum / static_cast<double>(positions.size()));
+  }
+  return row;
+}
+
+// Adds the nodes of the static.record sets to settings.record_nodes; an unknown set is an input
+// error at static.record with the case file's line.
+RecordedSets record_sets(const CaseFile& c, const Mesh& mesh, const std::string& text,
+                         StaticSettings& settings) {
+  RecordedSets sets;
+  for (const std::string& name : c.static_record) {
+    const std::vector<int>* nodes = nullptr;
+    try {
+      nodes = &find_node_set(mesh, name, "record");
+    } catch (const Error& e) {
+      throw located_in_case(Error(e.kind(), e.reason(), Where{c.file, "static.record", name, 0}),
+                            text);
+    }
+    sets.names.push_back(name);
+    sets.positions.emplace_back();
+    for (int node : *nodes) {
+      sets.positions.back().push_back(static_cast<int>(settings.record_nodes.size()));
+      settings.record_nodes.push_back(node);
+    }
+  }
+  return sets;
 }
 
 std::string format_row(const StaticRow& r) {
@@ -46,20 +89,35 @@ std::string format_row(const StaticRow& r) {
   return line;
 }
 
-std::string csv_text(const std::vector<StaticRow>& rows) {
+// The columns of a recorded set: <name>_ux_mm, <name>_uy_mm, <name>_uz_mm.
+std::string recorded_column(const std::string& name, int axis) {
+  return name + "_u" + "xyz"[axis] + "_mm";
+}
+
+std::string csv_text(const std::vector<StaticRow>& rows, const RecordedSets& sets) {
   std::ostringstream os;
   os.precision(12);
-  os << "load_factor,force_N,apex_deflection_mm,strain_energy_Nmm,reaction_N,iterations\n";
-  for (const auto& r : rows)
+  os << "load_factor,force_N,apex_deflection_mm,strain_energy_Nmm,reaction_N,iterations";
+  for (const std::string& name : sets.names)
+    for (int axis = 0; axis < 3; ++axis) os << ',' << recorded_column(name, axis);
+  os << '\n';
+  for (const auto& r : rows) {
     os << r.load_factor << ',' << r.force << ',' << r.deflection << ',' << r.energy << ','
-       << r.reaction << ',' << r.iterations << '\n';
+       << r.reaction << ',' << r.iterations;
+    for (const Vector3d& u : r.recorded) os << ',' << u.x() << ',' << u.y() << ',' << u.z();
+    os << '\n';
+  }
   return os.str();
 }
 
-nlohmann::json json_of(const StaticRow& r) {
-  return {{"load_factor", r.load_factor},       {"force_N", r.force},
-          {"apex_deflection_mm", r.deflection}, {"strain_energy_Nmm", r.energy},
-          {"reaction_N", r.reaction},           {"iterations", r.iterations}};
+nlohmann::json json_of(const StaticRow& r, const RecordedSets& sets) {
+  nlohmann::json j{{"load_factor", r.load_factor},       {"force_N", r.force},
+                   {"apex_deflection_mm", r.deflection}, {"strain_energy_Nmm", r.energy},
+                   {"reaction_N", r.reaction},           {"iterations", r.iterations}};
+  for (std::size_t i = 0; i < sets.names.size(); ++i)
+    for (int axis = 0; axis < 3; ++axis)
+      j[recorded_column(sets.names[i], axis)] = r.recorded[i][axis];
+  return j;
 }
 
 // A located event of the run (a limit point of the load factor), with the values there.
@@ -70,12 +128,13 @@ struct StaticEventRow {
 
 nlohmann::json json_of(const CaseFile& c, const ShellModel& m, const DofMap& dofs,
                        const std::vector<StaticRow>& rows,
-                       const std::vector<StaticEventRow>& event_rows, const std::string& failure) {
+                       const std::vector<StaticEventRow>& event_rows, const RecordedSets& sets,
+                       const std::string& failure) {
   nlohmann::json steps = nlohmann::json::array();
-  for (const auto& r : rows) steps.push_back(json_of(r));
+  for (const auto& r : rows) steps.push_back(json_of(r, sets));
   nlohmann::json events = nlohmann::json::array();
   for (const auto& e : event_rows) {
-    nlohmann::json j = json_of(e.row);
+    nlohmann::json j = json_of(e.row, sets);
     j.erase("iterations");
     j["type"] = cont::event_type_name(e.type);
     events.push_back(j);
@@ -116,7 +175,8 @@ void write_results(const std::filesystem::path& dir, const ShellModel& m, const 
   }
   if (last_state != nullptr && wants(output, OutputFormat::kVtu)) {
     const VtuFields fields = resultant_fields(m.mesh, assembler, *m.element, m.law, *last_state);
-    write_vtu((dir / "static.vtu").string(), m.mesh, *last_state, fields);
+    const VtuFormat format{output.vtu_encoding, output.mirror && m.symmetry_factor > 1};
+    write_vtu((dir / "static.vtu").string(), m.mesh, *last_state, fields, format);
     written.push_back((dir / "static.vtu").string());
   }
   err << "wrote ";
@@ -154,6 +214,10 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
     }
   }();
   for (const auto& w : m.warnings) err << "shellindent: warning: " << w << "\n";
+  StaticSettings settings = c.static_run;
+  settings.steps = c.load->steps;
+  settings.record_nodes = {m.apex_node()};
+  const RecordedSets sets = record_sets(c, m.mesh, text, settings);  // an unknown set: exit 2
   // The output directory is made (and checked, and locked) once the input is valid and before
   // the run, so that a long run cannot be lost to a bad --out at the end.
   const std::filesystem::path dir = o.out_dir.empty() ? c.output.dir : o.out_dir;
@@ -167,9 +231,6 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   const OutputLock lock(dir, dir_where);
 
   const DofMap dofs = make_dof_map(m.mesh, m.supports, m.displacements);
-  StaticSettings settings = c.static_run;
-  settings.steps = c.load->steps;
-  settings.record_nodes = {m.apex_node()};
   const bool natural = settings.method == PathMethod::kNatural;
   err << "static: " << m.mesh.num_nodes() << " nodes, " << m.mesh.num_elements() << " "
       << m.element->name() << " elements, " << dofs.num_free() << " free dofs, "
@@ -180,7 +241,7 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   std::vector<StaticRow> rows;
   std::vector<NodeState> last_state;
   const auto on_step = [&](const StepResult& r, const std::vector<NodeState>& s) {
-    rows.push_back(make_row(r, m.symmetry_factor));
+    rows.push_back(make_row(r, m.symmetry_factor, sets));
     last_state = s;
     const StaticRow& row = rows.back();
     err << "step " << rows.size() << ": load factor " << r.load_factor << ", " << r.iterations
@@ -212,7 +273,7 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   const std::string& failure = result.failure;
   std::vector<StaticEventRow> events;
   for (const StaticEvent& e : result.events)
-    events.push_back({e.type, make_row(e.at, m.symmetry_factor)});
+    events.push_back({e.type, make_row(e.at, m.symmetry_factor, sets)});
 
   out << "Static run of " << c.file << " (whole-shell values; force and apex deflection along -z)\n"
       << "  lambda        force_N  deflection_mm  strain_energy_Nmm     reaction_N  iters\n";
@@ -222,8 +283,9 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
         << ": force " << e.row.force << " N, apex deflection " << e.row.deflection << " mm\n";
 
   const Assembler assembler(m.mesh, dofs, *m.element, m.law, m.kinematics, o.threads);
-  write_results(dir, m, c.output, assembler, rows.empty() ? nullptr : &last_state, csv_text(rows),
-                json_of(c, m, dofs, rows, events, failure).dump(2) + "\n", err);
+  write_results(dir, m, c.output, assembler, rows.empty() ? nullptr : &last_state,
+                csv_text(rows, sets),
+                json_of(c, m, dofs, rows, events, sets, failure).dump(2) + "\n", err);
   if (failure.empty()) return 0;
   err << "shellindent: error: the run stopped after " << rows.size() << " converged step(s)"
       << (rows.empty() ? "" : " at load factor " + std::to_string(rows.back().load_factor)) << ": "

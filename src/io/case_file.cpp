@@ -48,8 +48,6 @@ const Choices<PathMethod> kMethods{{"natural", PathMethod::kNatural},
 const Choices<LoadType> kLoadTypes{{"apex_force", LoadType::kApexForce},
                                    {"pressure", LoadType::kPressure}};
 const Choices<bool> kBooleans{{"false", false}, {"true", true}};
-const Choices<OutputFormat> kFormats{
-    {"csv", OutputFormat::kCsv}, {"json", OutputFormat::kJson}, {"vtu", OutputFormat::kVtu}};
 
 // A section given as a map, or std::nullopt when the section is absent (defaults apply).
 std::optional<MapReader> section(const MapReader& top, const std::string& key) {
@@ -270,26 +268,6 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics,
   return contact;
 }
 
-std::vector<double> read_depths(const MapReader& map, double depth_max) {
-  const YAML::Node list = map.at("depths");
-  const Where list_where = map.where("depths");
-  if (!list.IsSequence() || list.size() == 0)
-    throw_input("expected a non-empty list of depths", list_where);
-  std::vector<double> depths;
-  for (size_t i = 0; i < list.size(); ++i) {
-    const Where w{list_where.file, list_where.key + "[" + std::to_string(i) + "]", text_of(list[i]),
-                  line_of(list[i])};
-    const double d = read_quantity(list[i], w, Dimension::kLength);
-    if (!(d > 0.0) || d > depth_max)
-      throw_input("each depth must lie in (0, depth_max = " +
-                      format_quantity(depth_max, Dimension::kLength) + "]",
-                  w);
-    if (!depths.empty() && d <= depths.back()) throw_input("depths must increase strictly", w);
-    depths.push_back(d);
-  }
-  return depths;
-}
-
 // A local contact law's approach and compliant rows are no constraint on the shell alone: the
 // restricted tangent (docs/theory/continuation.md 12) is defined without one.
 PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
@@ -319,7 +297,7 @@ PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
                     format_quantity(path.step_min, Dimension::kLength) + ", " +
                     format_quantity(path.step_max, Dimension::kLength) + "]",
                 map->where("step"));
-  if (map->has("depths")) path.depths = read_depths(*map, path.depth_max);
+  if (map->has("depths")) path.depths = read_depth_list(*map, "depths", path.depth_max);
   path.stability = map->choice_or("stability", kBooleans, path.stability);
   if (path.stability && contact.local != LocalContactModel::kNone)
     throw_input(
@@ -327,32 +305,6 @@ PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
         "constraint on the shell); set `contact.local: none` or `stability: false`",
         map->where("stability"));
   return path;
-}
-
-std::vector<OutputFormat> read_formats(const MapReader& map) {
-  const YAML::Node list = map.at("formats");
-  const Where list_where = map.where("formats");
-  if (!list.IsSequence()) throw_input("expected a list such as [csv, vtu]", list_where);
-  std::vector<OutputFormat> formats;
-  for (size_t i = 0; i < list.size(); ++i) {
-    const Where w{list_where.file, list_where.key + "[" + std::to_string(i) + "]", text_of(list[i]),
-                  line_of(list[i])};
-    formats.push_back(read_choice(list[i], w, kFormats));
-  }
-  return formats;
-}
-
-OutputSpec read_output(const MapReader& top) {
-  OutputSpec output;
-  const auto map = section(top, "output");
-  if (!map) return output;
-  map->allow_only({"dir", "vtu_every", "formats"});
-  output.dir = map->scalar_or("dir", output.dir);
-  output.vtu_every = map->integer_or("vtu_every", output.vtu_every);
-  if (output.vtu_every < 0)
-    throw_input("must be >= 0 (0 writes no VTU files)", map->where("vtu_every"));
-  if (map->has("formats")) output.formats = read_formats(*map);
-  return output;
 }
 
 // The load section is optional; once written, its magnitude is required (no paper default).
@@ -393,8 +345,10 @@ StaticSettings read_static(const MapReader& top) {
   const auto map = section(top, "static");
   if (!map) return s;
   map->allow_only({"method", "step", "step_min", "step_max", "parameter_weight", "load_factor_max",
-                   "max_steps"});
+                   "max_steps", "tolerance", "record"});
   s.method = map->choice_or("method", kMethods, s.method);
+  s.tolerance = map->positive_or("tolerance", Dimension::kDimensionless, s.tolerance);
+  if (s.tolerance >= 1e-2) throw_input("must be below 1e-2", map->where("tolerance"));
   if (s.method == PathMethod::kNatural) {
     for (const char* key :
          {"step", "step_min", "step_max", "parameter_weight", "load_factor_max", "max_steps"})
@@ -419,6 +373,27 @@ StaticSettings read_static(const MapReader& top) {
   s.max_steps = map->integer_or("max_steps", s.max_steps);
   if (s.max_steps < 1) throw_input("must be a whole number >= 1", map->where("max_steps"));
   return s;
+}
+
+// static.record (the command resolves the names against the mesh).
+std::vector<std::string> read_static_record(const MapReader& top) {
+  const auto map = section(top, "static");
+  if (!map || !map->has("record")) return {};
+  return read_name_list(*map, "record");
+}
+
+// The path lands on output.at: pseudo-arclength on path.depths, natural stepping on its grid
+// (path.depths, or the steps), so the depths join the list; a depth within 1e-12 of depth_max
+// of one already there is that one.
+std::vector<double> with_output_depths(const PathSpec& path, const std::vector<double>& at) {
+  if (at.empty()) return path.depths;
+  std::vector<double> depths = path.method == PathMethod::kNatural ? depth_grid(path) : path.depths;
+  depths.insert(depths.end(), at.begin(), at.end());
+  std::sort(depths.begin(), depths.end());
+  std::vector<double> merged;
+  for (double d : depths)
+    if (merged.empty() || d - merged.back() > 1e-12 * path.depth_max) merged.push_back(d);
+  return merged;
 }
 
 MaterialTable read_materials(const MapReader& top) {
@@ -470,9 +445,11 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   IndenterSpec indenter = read_indenter(top);
   ContactSpec contact = read_contact(top, kinematics, indenter);
   PathSpec path = read_path(top, contact);
-  OutputSpec output = read_output(top);
+  OutputSpec output = read_output(top, path.depth_max, mesh.symmetry == Symmetry::kQuarter);
+  path.depths = with_output_depths(path, output.at);
   std::optional<LoadSpec> load = read_load(top);
   StaticSettings static_run = read_static(top);
+  std::vector<std::string> static_record = read_static_record(top);
   std::optional<DamageSpec> damage = read_damage(top, laminate);
   return CaseFile{{{std::move(laminate), std::move(shell), std::move(mesh), kinematics,
                     std::move(load), file_label},
@@ -482,7 +459,8 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
                    std::move(damage)},
                   materials.default_material,
                   std::move(output),
-                  std::move(static_run)};
+                  std::move(static_run),
+                  std::move(static_record)};
 }
 
 CaseFile read_case_file(const std::string& path) {

@@ -11,6 +11,7 @@
 
 #include "analysis/indentation_case.hpp"
 #include "analysis/static_spec.hpp"
+#include "io/output_reader.hpp"
 #include "material/material.hpp"
 
 namespace si {
@@ -19,20 +20,14 @@ namespace si {
 // laminate, shell, mesh, kinematics, load), the indenter's (contact/indenter_spec.hpp), the
 // contact's and the path's (analysis/). What only the command line uses stays here.
 
-enum class OutputFormat { kCsv, kJson, kVtu };
-
-struct OutputSpec {
-  std::string dir = "results/";
-  int vtu_every = 10;  // write a VTU file every n converged steps; 0 = never
-  std::vector<OutputFormat> formats{OutputFormat::kCsv, OutputFormat::kJson, OutputFormat::kVtu};
-};
-
 struct CaseFile : IndentationCase {
   Material material;  // the top-level `material:`, the default ply material
   OutputSpec output;
   // `static:` (shellindent static): the method and its steps; load.steps, the recorded nodes
   // and the solver are the command's.
   StaticSettings static_run;
+  // static.record: node sets whose mean displacement static.csv and static.json carry.
+  std::vector<std::string> static_record;
 };
 
 // Reads and validates a case file. Every error is an input si::Error naming the file and, where

@@ -18,6 +18,10 @@ VtuFields resultant_fields(const Mesh& mesh, const Assembler& assembler,
   fields.point_data["M"] = resultants.middleCols(3, 3);
   fields.point_data["Q1"] = resultants.col(6);
   fields.point_data["Q2"] = resultants.col(7);
+  for (const char* tensor : {"membrane_strain", "curvature", "N", "M"})
+    fields.kinds[tensor] = FieldKind::kInPlaneTensor;
+  fields.kinds["shear_strain_13"] = fields.kinds["Q1"] = FieldKind::kAlongT1;
+  fields.kinds["shear_strain_23"] = fields.kinds["Q2"] = FieldKind::kAlongT2;
   return fields;
 }
 

@@ -1,5 +1,6 @@
 #include "io/yaml_reader.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <set>
 
@@ -156,6 +157,23 @@ size_t read_choice_index(const YAML::Node& node, const Where& where,
   for (size_t i = 0; i < names.size(); ++i)
     if (names[i] == text) return i;
   throw_input("unknown value" + did_you_mean(text, names) + "; allowed: " + join(names), where);
+}
+
+std::vector<std::string> read_name_list(const MapReader& map, const std::string& key) {
+  const YAML::Node list = map.at(key);
+  const Where list_where = map.where(key);
+  if (!list.IsSequence() || list.size() == 0)
+    throw_input("expected a non-empty list of names such as [tip, apex]", list_where);
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Where w{list_where.file, list_where.key + "[" + std::to_string(i) + "]", text_of(list[i]),
+                  line_of(list[i])};
+    if (!list[i].IsScalar() || list[i].Scalar().empty()) throw_input("expected a name", w);
+    if (std::find(names.begin(), names.end(), list[i].Scalar()) != names.end())
+      throw_input("listed twice", w);
+    names.push_back(list[i].Scalar());
+  }
+  return names;
 }
 
 }  // namespace si

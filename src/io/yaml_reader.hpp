@@ -86,4 +86,7 @@ class MapReader {
   Where where_;
 };
 
+// map[key]: a non-empty list of names (plain scalars), each once; errors name the entry (key[i]).
+std::vector<std::string> read_name_list(const MapReader& map, const std::string& key);
+
 }  // namespace si

@@ -118,6 +118,35 @@ TEST(StaticCommand, FreeEdgeIsRefusedBeforeTheRun) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// static.record: the mean displacement of a set as columns. The apex set is the node whose
+// deflection the run writes anyway, so <set>_uz_mm must be minus apex_deflection_mm in every
+// row; the rim (clamped) must not move. An unknown set is refused before anything is made.
+TEST(StaticCommand, RecordedSetsAreColumnsAndAnUnknownSetIsRefused) {
+  const fs::path dir = fresh_dir("static_record");
+  const std::string text = tiny_case("[0]", "full", "linear") + "static: {record: [apex, rim]}\n";
+  const fs::path path = write_case(dir, text);
+  const auto r = run_cli("static '" + path.string() + "' --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto j = nlohmann::json::parse(read_text(dir / "out" / "static.json"));
+  ASSERT_EQ(j.at("steps").size(), 2u);
+  for (const auto& step : j.at("steps")) {
+    EXPECT_GT(step.at("apex_deflection_mm").get<double>(), 0);
+    EXPECT_EQ(step.at("apex_uz_mm").get<double>(), -step.at("apex_deflection_mm").get<double>());
+    for (const char* column : {"rim_ux_mm", "rim_uy_mm", "rim_uz_mm"})
+      EXPECT_EQ(step.at(column).get<double>(), 0) << column;
+  }
+  EXPECT_TRUE(
+      contains(read_text(dir / "out" / "static.csv"), ",apex_ux_mm,apex_uy_mm,apex_uz_mm,"));
+  const fs::path dir2 = fresh_dir("static_record_unknown");
+  const fs::path bad =
+      write_case(dir2, tiny_case("[0]", "full", "linear") + "static: {record: [tip]}\n");
+  const auto r2 = run_cli("static '" + bad.string() + "' --out '" + (dir2 / "out").string() + "'");
+  EXPECT_EQ(r2.exit_code, 2) << r2.output;
+  EXPECT_TRUE(contains(r2.output, "static.record")) << r2.output;
+  EXPECT_TRUE(contains(r2.output, "unknown node set 'tip'")) << r2.output;
+  EXPECT_FALSE(fs::exists(dir2 / "out"));
+}
+
 TEST(StaticCommand, NonConvergedRunExitsOneAndWritesWhereItStopped) {
   // A 0.04 mm thick cap under 50 kN: far beyond its collapse load, so load control cannot
   // converge; the run must stop with exit 1, say where and why, and keep its steps table.
