@@ -18,6 +18,7 @@
 #include "io/result_fields.hpp"
 #include "io/vtu_writer.hpp"
 #include "model/assembler.hpp"
+#include "test_paths.hpp"
 
 namespace si {
 namespace {
