@@ -71,8 +71,9 @@ py::tuple calibrate_case(const CaseHandle& c, const DataSource& data,
                          const std::vector<std::string>& params, const std::string& algorithm,
                          int max_evaluations, double xtol, int threads, int jobs, bool warm_start,
                          const py::object& progress) {
-  const CaseCalibrationInput input{c.file.file, c.text,  params, algorithm, max_evaluations,
-                                   xtol,        threads, jobs,   warm_start};
+  const CaseCalibrationInput input{
+      c.file.file, c.text, params,
+      CaseCalibrationSettings{algorithm, max_evaluations, xtol, threads, jobs, warm_start}};
   std::ostringstream notes;
   std::optional<CaseCalibration> calibration;
   {

@@ -26,11 +26,7 @@ std::string read_text(const std::string& path) {
 }  // namespace
 
 int run_calibrate_command(const CalibrateCommandOptions& o, std::ostream& out, std::ostream& err) {
-  CaseCalibrationInput input{o.case_file,       read_text(o.case_file),
-                             o.params,          o.algorithm,
-                             o.max_evaluations, o.xtol,
-                             o.threads,         o.jobs,
-                             o.warm_start};
+  const CaseCalibrationInput input{o.case_file, read_text(o.case_file), o.params, o.settings};
   const CaseCalibration calibration(
       input,
       [&](int min_points) {

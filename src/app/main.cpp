@@ -232,24 +232,26 @@ int run(int argc, char** argv) {
   calibrate_cmd->add_option("--y", co.y_column, "force column (default: the first force column)");
   calibrate_cmd->add_option("--out", co.out_dir,
                             "output directory (default: results/CASE_calibration)");
-  calibrate_cmd->add_option("--algorithm", co.algorithm, "bobyqa (derivative-free) or slsqp")
+  calibrate_cmd
+      ->add_option("--algorithm", co.settings.algorithm, "bobyqa (derivative-free) or slsqp")
       ->capture_default_str();
   calibrate_cmd
-      ->add_option("--max-evaluations", co.max_evaluations,
+      ->add_option("--max-evaluations", co.settings.max_evaluations,
                    "model evaluations of the search (the Jacobian's 2p come on top)")
       ->capture_default_str();
   calibrate_cmd
-      ->add_option("--xtol", co.xtol,
+      ->add_option("--xtol", co.settings.xtol,
                    "stop when the search's steps are below this fraction of each parameter's range")
       ->capture_default_str();
   calibrate_cmd
-      ->add_option("--threads", co.threads, "assembly threads of each run (0: OpenMP's default)")
+      ->add_option("--threads", co.settings.threads,
+                   "assembly threads of each run (0: OpenMP's default)")
       ->capture_default_str();
-  calibrate_cmd->add_flag("!--no-warm-start", co.warm_start,
+  calibrate_cmd->add_flag("!--no-warm-start", co.settings.warm_start,
                           "run every evaluation's full path from first touch (default: each run "
                           "starts from the nearest earlier run's converged states)");
   calibrate_cmd
-      ->add_option("-j,--jobs", co.jobs,
+      ->add_option("-j,--jobs", co.settings.jobs,
                    "runs at once for the Jacobian at the optimum (the search is sequential)")
       ->capture_default_str();
 

@@ -197,16 +197,17 @@ CaseCalibration::CaseCalibration(const CaseCalibrationInput& in,
                                  const MeasuredCurveReader& read_data, std::ostream& notes)
     : impl_(std::make_unique<Impl>(in, read_parameters(in, notes))) {
   Impl& s = *impl_;
-  s.algorithm =
-      read_choice(YAML::Node(in.algorithm), Where{"command line", "--algorithm", in.algorithm, 0},
-                  calibration_algorithm_spellings());
-  check_thread_count(in.threads);
-  check_parallel_count(in.jobs, "-j", 1, "runs at once");
+  s.algorithm = read_choice(YAML::Node(in.settings.algorithm),
+                            Where{"command line", "--algorithm", in.settings.algorithm, 0},
+                            calibration_algorithm_spellings());
+  check_thread_count(in.settings.threads);
+  check_parallel_count(in.settings.jobs, "-j", 1, "runs at once");
   const int np = static_cast<int>(s.params.size());
-  if (in.max_evaluations < 2 * np + 2)
-    throw_input("needs at least 2 p + 2 = " + std::to_string(2 * np + 2),
-                Where{"command line", "--max-evaluations", std::to_string(in.max_evaluations), 0});
-  s.context = CalibrationContext{in.case_label, read_data(np + 2), {}, in.threads};
+  if (in.settings.max_evaluations < 2 * np + 2)
+    throw_input(
+        "needs at least 2 p + 2 = " + std::to_string(2 * np + 2),
+        Where{"command line", "--max-evaluations", std::to_string(in.settings.max_evaluations), 0});
+  s.context = CalibrationContext{in.case_label, read_data(np + 2), {}, in.settings.threads};
   s.start.resize(np);
   for (int j = 0; j < np; ++j) {
     s.start[j] = s.params[j].bounds.start;
@@ -230,13 +231,13 @@ fit::CalibrationResult CaseCalibration::run(
   Eigen::VectorXd width(np);
   for (int j = 0; j < np; ++j) width[j] = s.params[j].bounds.upper - s.params[j].bounds.lower;
   WarmStarts warm(width);
-  const bool warm_start = s.input.warm_start;
+  const bool warm_start = s.input.settings.warm_start;
   problem.model = [&](const Eigen::VectorXd& c) {
     fit::ModelOutput m;
     try {
       const std::optional<ForceTravelStates> from = warm_start ? warm.nearest(c) : std::nullopt;
-      ForceTravel f = run_force_travel(s.cases.read(c), data.travel, s.input.threads, keep_going,
-                                       from ? &*from : nullptr);
+      ForceTravel f = run_force_travel(s.cases.read(c), data.travel, s.input.settings.threads,
+                                       keep_going, from ? &*from : nullptr);
       m.ok = f.ok;
       m.failure = f.failure;
       m.predicted = Eigen::Map<const Eigen::VectorXd>(f.force.data(), f.force.size());
@@ -250,9 +251,9 @@ fit::CalibrationResult CaseCalibration::run(
   };
   fit::CalibrationSettings settings;
   settings.algorithm = s.algorithm;
-  settings.max_evaluations = s.input.max_evaluations;
-  settings.xtol = s.input.xtol;
-  settings.concurrent_evaluations = s.input.jobs;
+  settings.max_evaluations = s.input.settings.max_evaluations;
+  settings.xtol = s.input.settings.xtol;
+  settings.concurrent_evaluations = s.input.settings.jobs;
   settings.progress = progress;
   return fit::calibrate(problem, settings);
 }
@@ -284,8 +285,8 @@ std::string CaseCalibration::header_line() const {
   os << "calibrate: " << s.input.case_label << " against " << data.file << ": "
      << data.travel.size() << " points, travel " << data.travel.front() << " to "
      << data.travel.back() << " mm, " << s.params.size() << " parameter(s), "
-     << fit::calibration_algorithm_name(s.algorithm) << ", at most " << s.input.max_evaluations
-     << " search evaluations";
+     << fit::calibration_algorithm_name(s.algorithm) << ", at most "
+     << s.input.settings.max_evaluations << " search evaluations";
   return os.str();
 }
 

@@ -21,16 +21,21 @@
 
 namespace si {
 
-struct CaseCalibrationInput {
-  std::string case_label;            // the case file's name (or a label), as messages name it
-  std::string case_text;             // its YAML
-  std::vector<std::string> params;   // "material.E3=5GPa:20GPa[:10GPa]"
+// How the search runs: the command line's options (`shellindent calibrate --algorithm ...`).
+struct CaseCalibrationSettings {
   std::string algorithm = "bobyqa";  // bobyqa (derivative-free) or slsqp (finite differences)
   int max_evaluations = 100;
   double xtol = 1e-4;      // the search stops when its steps are below this fraction of each range
   int threads = 1;         // assembly threads of each run (0: OpenMP's default)
   int jobs = 1;            // the Jacobian's runs at once (each with `threads` threads)
   bool warm_start = true;  // start each run from the nearest earlier one's states
+};
+
+struct CaseCalibrationInput {
+  std::string case_label;           // the case file's name (or a label), as messages name it
+  std::string case_text;            // its YAML
+  std::vector<std::string> params;  // "material.E3=5GPa:20GPa[:10GPa]"
+  CaseCalibrationSettings settings;
 };
 
 // The measured curve, read once the number of parameters is known: min_points = parameters + 2.

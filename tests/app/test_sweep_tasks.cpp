@@ -18,17 +18,12 @@ namespace si {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::contains;
-using testing::fresh_dir;
-using testing::read_file;
-using testing::run_cli;
-
-const std::string kStudies = std::string(SHELLINDENT_SOURCE_DIR) + "/studies";
+using namespace testing;  // run_cli, fresh_dir, read_file, contains (cli_test_support.hpp)
 
 // Two indenter radii on the paper's cap, coarse and short in the quick mode (about 1 s a case).
 fs::path two_radii_study(const fs::path& dir, const std::string& name = "radii.yaml") {
   const fs::path p = dir / name;
-  std::ofstream(p) << "base: " << kStudies << "/paper_cap.yaml\n"
+  std::ofstream(p) << "base: " << SHELLINDENT_SOURCE_DIR << "/studies/paper_cap.yaml\n"
                    << "vary: {indenter.radius: [8 mm, 12.7 mm]}\n"
                       "fit: {model: power}\n"
                       "quick: {mesh.size_apex: 3 mm, mesh.size_edge: 5 mm, path.depth_max: 0.5 mm,"
