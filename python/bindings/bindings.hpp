@@ -33,5 +33,7 @@ void bind_section(py::module_& m);
 void bind_study(py::module_& m);
 // fit_curve: the curve fits of fitting/ (power law, Hertz, power law with offset).
 void bind_fit(py::module_& m);
+// calibrate_file, calibrate_arrays: a case calibrated against a measured force-travel curve.
+void bind_calibrate(py::module_& m);
 
 }  // namespace si::py

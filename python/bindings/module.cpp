@@ -12,4 +12,5 @@ PYBIND11_MODULE(_core, m) {
   si::py::bind_section(m);
   si::py::bind_fit(m);
   si::py::bind_study(m);
+  si::py::bind_calibrate(m);
 }

@@ -22,7 +22,7 @@ from . import _core
 from .case import default_case, read_case
 from .errors import InputError
 
-# As `shellindent run --threads` (app/thread_count.hpp): more than 4 per hardware thread is
+# As `shellindent run --threads` (io/thread_count.hpp): more than 4 per hardware thread is
 # never faster and crashed libgomp at 100000.
 THREADS_PER_CORE = 4
 

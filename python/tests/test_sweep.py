@@ -4,12 +4,13 @@ it runs a case (the scheduler resubmits it); a sweep started again submits nothi
 
 import os
 import shutil
+import subprocess
 import threading
 import time
 import unittest
 
 import shellindent as si
-from cases import OUT, run_cli
+from cases import EXE, OUT, run_cli
 from shellindent.sweep import _local_client
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -98,6 +99,75 @@ class DaskSweep(unittest.TestCase):
         self.assertEqual(killed, 1, "no worker was busy to kill")
         self.assertEqual(result.failed, 0)
         self.assertEqual(read(os.path.join(out, "sweep.csv")), self.cli_csv)
+
+    def test_cli_scheduler_option_gives_the_cli_table(self):
+        # `shellindent sweep --scheduler ADDRESS` on a 2-worker LocalCluster started here.
+        from distributed import LocalCluster
+        cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                               host="127.0.0.1", dashboard_address=None)
+        out = fresh("sweep_scheduler")
+        try:
+            code, stdout, err = run_cli("sweep", STUDY, "--scheduler",
+                                        cluster.scheduler_address, "--out", out)
+        finally:
+            cluster.close()
+        self.assertEqual(code, 0, err)
+        self.assertIn("on the Dask cluster at tcp://127.0.0.1:", err)
+        self.assertEqual(read(os.path.join(out, "sweep.csv")), self.cli_csv)
+        self.assertEqual(stdout, self.cli_csv)
+
+
+def run_cli_with(env, *args):
+    p = subprocess.run([EXE, *args], capture_output=True, text=True, timeout=120,
+                       env=dict(os.environ, **env))
+    return p.returncode, p.stdout, p.stderr
+
+
+class SchedulerErrors(unittest.TestCase):
+    """--scheduler without a way to reach a cluster: exit 2, a message naming --scheduler, no
+    output directory left behind."""
+
+    def check_refused(self, env, address, expected):
+        out = fresh("sweep_scheduler_refused")
+        start = time.monotonic()
+        code, _, err = run_cli_with(env, "sweep", STUDY, "--scheduler", address, "--out", out)
+        self.assertEqual(code, 2, err)
+        self.assertIn(f"shellindent: error: command line: --scheduler = '{address}': ", err)
+        self.assertIn(expected, err)
+        self.assertFalse(os.path.exists(out))
+        return time.monotonic() - start
+
+    def test_unreachable_scheduler_is_an_error_after_the_connect_timeout(self):
+        # Port 9 (discard) on the loopback address: nobody listens there on a test machine.
+        seconds = self.check_refused({}, "tcp://127.0.0.1:9", "cannot reach the Dask scheduler")
+        self.assertLess(seconds, 60)
+
+    def test_missing_dask_distributed_is_named(self):
+        fake = fresh("no_distributed")
+        os.makedirs(os.path.join(fake, "distributed"))
+        with open(os.path.join(fake, "distributed", "__init__.py"), "w") as f:
+            f.write("raise ImportError('no distributed here (test)')\n")
+        env = {"PYTHONPATH": fake + os.pathsep + os.environ.get("PYTHONPATH", "")}
+        self.check_refused(env, "tcp://127.0.0.1:9", "dask.distributed cannot be imported")
+
+    def test_missing_interpreter_is_named(self):
+        self.check_refused({"SHELLINDENT_PYTHON": "/nonexistent/python3"}, "tcp://127.0.0.1:9",
+                           "cannot start the Python interpreter /nonexistent/python3")
+
+    def test_missing_module_is_named(self):
+        # An interpreter without the module: the build tree's is put first only when present,
+        # so a python3 started with -I (isolated: no PYTHONPATH, no user site) stands for one.
+        if subprocess.run(["/usr/bin/python3", "-I", "-c", "import shellindent"],
+                          capture_output=True).returncode == 0:
+            self.skipTest("shellindent is installed for /usr/bin/python3")
+        directory = fresh("isolated_python")
+        os.makedirs(directory)
+        wrapper = os.path.join(directory, "python3")
+        with open(wrapper, "w") as f:
+            f.write("#!/bin/sh\nexec /usr/bin/python3 -I \"$@\"\n")
+        os.chmod(wrapper, 0o755)
+        self.check_refused({"SHELLINDENT_PYTHON": wrapper}, "tcp://127.0.0.1:9",
+                           "the Python module shellindent cannot be imported")
 
 
 class DaskSweepWorkerDiesTwice(unittest.TestCase):

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "io/case_calibration.hpp"
+
 namespace si {
 
 struct CalibrateCommandOptions {
@@ -22,12 +24,7 @@ struct CalibrateCommandOptions {
   std::vector<std::string> params;   // "material.E3=5GPa:20GPa[:10GPa]"
   std::string x_column, y_column;    // empty: the first length / force column
   std::string out_dir;               // empty: results/<case stem>_calibration
-  std::string algorithm = "bobyqa";  // bobyqa (derivative-free) or slsqp (finite differences)
-  int max_evaluations = 100;
-  double xtol = 1e-4;      // the search stops when its steps are below this fraction of each range
-  int threads = 1;         // assembly threads of each run (0: OpenMP's default)
-  int jobs = 1;            // the Jacobian's runs at once (each with `threads` threads)
-  bool warm_start = true;  // start each run from the nearest earlier one's states
+  CaseCalibrationSettings settings;  // --algorithm, --max-evaluations, --xtol, --threads, -j
 };
 
 int run_calibrate_command(const CalibrateCommandOptions& options, std::ostream& out,

@@ -74,10 +74,15 @@ constexpr const char* kSweepHelp =
     "Prints a line per finished case to stderr and the merged table to stdout; writes "
     "DIR/sweep.csv and sweep.json (per case: status, force at depth_max, force maximum, end "
     "energy, critical-force events, and with fit: C1, C2 of T = C1 h^C2 with 95% intervals). "
-    "Exit 1 if a case failed. See docs/sweeps.md.\n"
+    "Exit 1 if a case failed. For a cluster: --emit DIR writes the cases and a task list for a "
+    "SLURM job array or GNU parallel, --collect DIR merges their results; --scheduler runs the "
+    "cases on a Dask cluster. See docs/sweeps.md.\n"
     "Examples:\n"
     "  shellindent sweep studies/paper_layups.yaml -j 2\n"
-    "  shellindent sweep studies/paper_layups.yaml --quick --out /tmp/quick";
+    "  shellindent sweep studies/paper_layups.yaml --quick --out /tmp/quick\n"
+    "  shellindent sweep studies/paper_layups.yaml --emit /scratch/layups   (then: parallel -j 8 "
+    "< /scratch/layups/tasks.txt; shellindent sweep --collect /scratch/layups)\n"
+    "  shellindent sweep studies/paper_layups.yaml --scheduler tcp://head:8786";
 
 constexpr const char* kFitHelp =
     "Fit a curve to two columns of a CSV file (header line required): y = C1 x^C2 fitted in linear "
@@ -175,13 +180,21 @@ int run(int argc, char** argv) {
   si::SweepCommandOptions swo;
   auto* sweep_cmd = app.add_subcommand("sweep", kSweepHelp);
   sweep_cmd->add_option("study", swo.study_file, "YAML study file (docs/sweeps.md)")
-      ->required()
       ->check(CLI::ExistingFile);
   sweep_cmd->add_option("-j,--jobs", swo.jobs, "cases run at once (one thread each)")
       ->capture_default_str();
   sweep_cmd->add_option("--out", swo.out_dir, "output directory (default: results/<name>)");
   sweep_cmd->add_flag("--quick", swo.quick,
                       "apply the study's quick: keys (coarse smoke test of the study)");
+  sweep_cmd->add_option("--emit", swo.emit_dir,
+                        "run nothing: write the cases and DIR/tasks.txt (one shell command per "
+                        "case) for a SLURM job array or GNU parallel, then use --collect DIR");
+  sweep_cmd->add_option("--collect", swo.collect_dir,
+                        "merge the results of the cases emitted into DIR into DIR/sweep.csv "
+                        "and sweep.json (the study is optional)");
+  sweep_cmd->add_option("--scheduler", swo.scheduler,
+                        "run the cases on the Dask cluster at this address (tcp://host:8786) "
+                        "through the Python module (docs/sweeps.md)");
   si::FitCommandOptions fo;
   auto* fit_cmd = app.add_subcommand("fit", kFitHelp);
   fit_cmd->add_option("data", fo.data_file, "CSV file with a header line")
@@ -219,24 +232,26 @@ int run(int argc, char** argv) {
   calibrate_cmd->add_option("--y", co.y_column, "force column (default: the first force column)");
   calibrate_cmd->add_option("--out", co.out_dir,
                             "output directory (default: results/CASE_calibration)");
-  calibrate_cmd->add_option("--algorithm", co.algorithm, "bobyqa (derivative-free) or slsqp")
+  calibrate_cmd
+      ->add_option("--algorithm", co.settings.algorithm, "bobyqa (derivative-free) or slsqp")
       ->capture_default_str();
   calibrate_cmd
-      ->add_option("--max-evaluations", co.max_evaluations,
+      ->add_option("--max-evaluations", co.settings.max_evaluations,
                    "model evaluations of the search (the Jacobian's 2p come on top)")
       ->capture_default_str();
   calibrate_cmd
-      ->add_option("--xtol", co.xtol,
+      ->add_option("--xtol", co.settings.xtol,
                    "stop when the search's steps are below this fraction of each parameter's range")
       ->capture_default_str();
   calibrate_cmd
-      ->add_option("--threads", co.threads, "assembly threads of each run (0: OpenMP's default)")
+      ->add_option("--threads", co.settings.threads,
+                   "assembly threads of each run (0: OpenMP's default)")
       ->capture_default_str();
-  calibrate_cmd->add_flag("!--no-warm-start", co.warm_start,
+  calibrate_cmd->add_flag("!--no-warm-start", co.settings.warm_start,
                           "run every evaluation's full path from first touch (default: each run "
                           "starts from the nearest earlier run's converged states)");
   calibrate_cmd
-      ->add_option("-j,--jobs", co.jobs,
+      ->add_option("-j,--jobs", co.settings.jobs,
                    "runs at once for the Jacobian at the optimum (the search is sequential)")
       ->capture_default_str();
 

@@ -12,7 +12,6 @@
 #include "analysis/indentation_run.hpp"
 #include "app/interrupt_signals.hpp"
 #include "app/path_vtus.hpp"
-#include "app/thread_count.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
@@ -25,6 +24,7 @@
 #include "io/output_lock.hpp"
 #include "io/path_results.hpp"
 #include "io/spellings.hpp"
+#include "io/thread_count.hpp"
 
 namespace si {
 namespace {

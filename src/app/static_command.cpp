@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "analysis/static_run.hpp"
-#include "app/thread_count.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "io/case_file.hpp"
@@ -18,6 +17,7 @@
 #include "io/output_directory.hpp"
 #include "io/output_lock.hpp"
 #include "io/result_fields.hpp"
+#include "io/thread_count.hpp"
 #include "io/vtu_writer.hpp"
 #include "model/node_set.hpp"
 #include "model/shell_model.hpp"

@@ -21,8 +21,10 @@
 #include <thread>
 
 #include "analysis/path_columns.hpp"
+#include "app/dask_sweep.hpp"
 #include "app/interrupt_signals.hpp"
-#include "app/thread_count.hpp"
+#include "app/sweep_cases.hpp"
+#include "app/sweep_tasks.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "io/output_directory.hpp"
@@ -30,13 +32,16 @@
 #include "io/path_results.hpp"
 #include "io/study_file.hpp"
 #include "io/sweep_table.hpp"
+#include "io/thread_count.hpp"
 
 extern char** environ;
 
 namespace si {
-namespace {
 
 namespace fs = std::filesystem;
+
+namespace {
+
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
@@ -152,6 +157,52 @@ json not_run(const StudyCase& c, const std::string& signal) {
   return row;
 }
 
+// The cases run here, -j at a time, as child processes.
+int run_local_sweep(const SweepCommandOptions& o, std::ostream& out, std::ostream& err) {
+  check_parallel_count(o.jobs, "-j", 1, "cases at once");
+  const SweepCases s = load_sweep_cases(o.study_file, o.quick);
+  const fs::path root = sweep_root(o, s.study);
+  const Where root_where = sweep_root_where(o, s.study);
+  prepare_output_directory(root, root_where);
+  const OutputLock lock(root, root_where);
+  const fs::path case_root = root / "cases";
+  err << "sweep: " << s.study.file << ": " << s.cases.size() << " case(s)"
+      << (o.quick ? " (--quick)" : "") << ", " << o.jobs << " at once, in " << case_root.string()
+      << "\n";
+  const InterruptGuard guard;  // Ctrl-C / SIGTERM: stop the cases, then summarise (Scheduler)
+  Scheduler scheduler(s.cases, case_root, o.jobs, resolve_executable(o.executable), err);
+  std::vector<size_t> todo;
+  for (size_t i = 0; i < s.cases.size(); ++i) {
+    if (prepare_case_directory(case_root, s.cases[i]))
+      todo.push_back(i);
+    else
+      scheduler.report_skipped(i);
+  }
+  scheduler.run(todo);
+
+  json rows = json::array();
+  for (size_t i = 0; i < s.cases.size(); ++i)
+    rows.push_back(scheduler.started(i)
+                       ? summarize_case(s.cases[i], case_root / s.cases[i].slug, s.study)
+                       : not_run(s.cases[i], interrupt_name()));
+  return write_sweep_tables(
+      root, s, rows,
+      interrupted() ? std::string("not finished: interrupted (") + interrupt_name() + ")"
+                    : std::string("failed"),
+      out, err);
+}
+
+}  // namespace
+
+fs::path sweep_root(const SweepCommandOptions& o, const StudyFile& study) {
+  return o.out_dir.empty() ? fs::path("results") / study.name : fs::path(o.out_dir);
+}
+
+Where sweep_root_where(const SweepCommandOptions& o, const StudyFile& study) {
+  return o.out_dir.empty() ? Where{study.file, "name", study.name, 0}
+                           : Where{"command line", "--out", o.out_dir, 0};
+}
+
 std::string resolve_executable(const std::string& exe) {
   if (exe != "/proc/self/exe") return exe;
   std::error_code ec;
@@ -159,63 +210,23 @@ std::string resolve_executable(const std::string& exe) {
   return ec ? exe : p.string();
 }
 
-}  // namespace
-
 int run_sweep_command(const SweepCommandOptions& o, std::ostream& out, std::ostream& err) {
-  check_parallel_count(o.jobs, "-j", 1, "cases at once");
-  const StudyFile study = read_study_file(o.study_file);
-  const std::vector<StudyCase> cases = expand_study(study, o.quick);
-  for (const StudyCase& c : cases)  // the sweep's table is read from each case's path.json
-    if (std::find(c.case_file.output.formats.begin(), c.case_file.output.formats.end(),
-                  OutputFormat::kJson) == c.case_file.output.formats.end())
-      throw_input("a sweep reads each case's path.json: output.formats must include json",
-                  Where{c.label, "output.formats", "", 0});
-  const fs::path root = o.out_dir.empty() ? fs::path("results") / study.name : fs::path(o.out_dir);
-  const Where root_where = o.out_dir.empty() ? Where{study.file, "name", study.name, 0}
-                                             : Where{"command line", "--out", root.string(), 0};
-  prepare_output_directory(root, root_where);
-  const OutputLock lock(root, root_where);
-  const fs::path case_root = root / "cases";
-  err << "sweep: " << study.file << ": " << cases.size() << " case(s)"
-      << (o.quick ? " (--quick)" : "") << ", " << o.jobs << " at once, in " << case_root.string()
-      << "\n";
-  const InterruptGuard guard;  // Ctrl-C / SIGTERM: stop the cases, then summarise (Scheduler)
-  Scheduler scheduler(cases, case_root, o.jobs, resolve_executable(o.executable), err);
-  std::vector<size_t> todo;
-  for (size_t i = 0; i < cases.size(); ++i) {
-    const fs::path dir = case_root / cases[i].slug;
-    if (case_is_done(dir, cases[i].yaml)) {
-      scheduler.report_skipped(i);
-      continue;
-    }
-    for (const char* stale : {"path.json", "path.csv", "events.json", "checkpoint.json"})
-      fs::remove(dir / stale);
-    write_file_atomically((dir / "case.yaml").string(), cases[i].yaml);
-    todo.push_back(i);
+  const int modes = !o.emit_dir.empty() + !o.collect_dir.empty() + !o.scheduler.empty();
+  if (modes > 1)
+    throw_input("--emit, --collect and --scheduler exclude each other: give one",
+                Where{"command line", "sweep", "", 0});
+  if (!o.collect_dir.empty()) {
+    if (o.quick)
+      throw_input("--collect takes the quick mode from the emitted sweep: give no --quick",
+                  Where{"command line", "--quick", "", 0});
+    return collect_sweep_tasks(o, out, err);
   }
-  scheduler.run(todo);
-
-  json rows = json::array();
-  int failed = 0;
-  for (size_t i = 0; i < cases.size(); ++i) {
-    rows.push_back(scheduler.started(i) ? summarize_case(cases[i], case_root / cases[i].slug, study)
-                                        : not_run(cases[i], interrupt_name()));
-    failed += finished_status(rows.back()["status"].get<std::string>()) ? 0 : 1;
-  }
-  const std::string csv = sweep_csv(study, cases, rows);
-  write_file_atomically((root / "sweep.csv").string(), csv);
-  write_file_atomically((root / "sweep.json").string(), sweep_json(study, cases, o.quick, rows));
-  out << csv;
-  err << "wrote " << (root / "sweep.csv").string() << " and sweep.json";
-  if (failed == 0) {
-    err << "\n";
-    return 0;
-  }
-  err << "; " << failed << " of " << cases.size() << " case(s) "
-      << (interrupted() ? std::string("not finished: interrupted (") + interrupt_name() + ")"
-                        : std::string("failed"))
-      << "\n";
-  return 1;
+  if (o.study_file.empty())
+    throw_input("a study file is required (only --collect DIR finds it in DIR)",
+                Where{"command line", "study", "", 0});
+  if (!o.emit_dir.empty()) return emit_sweep_tasks(o, out, err);
+  if (!o.scheduler.empty()) return run_dask_sweep(o, out, err);
+  return run_local_sweep(o, out, err);
 }
 
 }  // namespace si

@@ -103,7 +103,12 @@ ColumnName split_column_name(const std::string& header) {
 
 MeasuredCurve read_measured_curve(const std::string& path, const std::string& x_column,
                                   const std::string& y_column, int min_points) {
-  const CsvTable t = read_csv_table(path);
+  return measured_curve_from_table(read_csv_table(path), x_column, y_column, min_points);
+}
+
+MeasuredCurve measured_curve_from_table(const CsvTable& t, const std::string& x_column,
+                                        const std::string& y_column, int min_points) {
+  const std::string& path = t.file;
   MeasuredCurve m;
   m.file = path;
   const int jx = find_column(t, x_column, Dimension::kLength, "--x");

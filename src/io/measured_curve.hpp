@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/units.hpp"
+#include "io/csv_table.hpp"
 
 namespace si {
 
@@ -39,5 +40,10 @@ struct MeasuredCurve {
 // the first column with a length unit / with a force unit.
 MeasuredCurve read_measured_curve(const std::string& path, const std::string& x_column,
                                   const std::string& y_column, int min_points);
+
+// The same from a table already in memory (the Python module's arrays: a table named by its
+// label, the cells as text, one line per row), with the same checks and messages.
+MeasuredCurve measured_curve_from_table(const CsvTable& table, const std::string& x_column,
+                                        const std::string& y_column, int min_points);
 
 }  // namespace si

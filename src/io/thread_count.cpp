@@ -1,4 +1,4 @@
-#include "app/thread_count.hpp"
+#include "io/thread_count.hpp"
 
 #include <algorithm>
 #include <thread>
