@@ -30,8 +30,8 @@
 namespace si {
 namespace {
 
-// The VTU of one point: resultants plus the contact pressure and force at every node, and any
-// `extra` fields.
+// The VTU of one point: resultants plus the contact pressure and force at every node (and a
+// support frame's force and gap), and any `extra` fields.
 void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& s,
                      const IndentationState& st, const cont::Vector& z,
                      const VtuFields& extra = {}) {
@@ -47,6 +47,16 @@ void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& 
   }
   fields.point_data["contact_pressure"] = pressure;
   fields.point_data["contact_force"] = force;
+  if (!st.frame_nodes.empty()) {  // a fixture's support frame: its reaction and gap per node
+    Eigen::VectorXd frame_force = Eigen::VectorXd::Zero(s.model.mesh.num_nodes());
+    Eigen::VectorXd frame_gap = frame_force;
+    for (std::size_t i = 0; i < st.frame_nodes.size(); ++i) {
+      frame_force[st.frame_nodes[i]] = st.frame_multipliers[i];
+      frame_gap[st.frame_nodes[i]] = st.frame_gaps[i];
+    }
+    fields.point_data["frame_force"] = frame_force;
+    fields.point_data["frame_gap"] = frame_gap;
+  }
   add_damage_fields(s, st, z, fields);
   for (const auto& [name, values] : extra.point_data) fields.point_data[name] = values;
   write_vtu(file.string(), s.model.mesh, state, fields);
