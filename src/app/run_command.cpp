@@ -30,6 +30,14 @@
 namespace si {
 namespace {
 
+// Per-candidate values as a nodal field: zero at the nodes that are not candidates.
+Eigen::VectorXd nodal_field(int num_nodes, const std::vector<int>& nodes,
+                            const std::vector<double>& values) {
+  Eigen::VectorXd field = Eigen::VectorXd::Zero(num_nodes);
+  for (std::size_t i = 0; i < nodes.size(); ++i) field[nodes[i]] = values[i];
+  return field;
+}
+
 // The VTU of one point: resultants plus the contact pressure and force at every node (and a
 // support frame's force and gap), and any `extra` fields.
 void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& s,
@@ -39,23 +47,12 @@ void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& 
   const std::vector<NodeState> state = p.node_states(z);
   VtuFields fields =
       resultant_fields(s.model.mesh, p.assembler(), *s.model.element, s.model.law, state);
-  Eigen::VectorXd pressure = Eigen::VectorXd::Zero(s.model.mesh.num_nodes());
-  Eigen::VectorXd force = pressure;
-  for (std::size_t i = 0; i < st.nodes.size(); ++i) {
-    pressure[st.nodes[i]] = st.pressures[i];
-    force[st.nodes[i]] = st.multipliers[i];
-  }
-  fields.point_data["contact_pressure"] = pressure;
-  fields.point_data["contact_force"] = force;
+  const int nn = s.model.mesh.num_nodes();
+  fields.point_data["contact_pressure"] = nodal_field(nn, st.nodes, st.pressures);
+  fields.point_data["contact_force"] = nodal_field(nn, st.nodes, st.multipliers);
   if (!st.frame_nodes.empty()) {  // a fixture's support frame: its reaction and gap per node
-    Eigen::VectorXd frame_force = Eigen::VectorXd::Zero(s.model.mesh.num_nodes());
-    Eigen::VectorXd frame_gap = frame_force;
-    for (std::size_t i = 0; i < st.frame_nodes.size(); ++i) {
-      frame_force[st.frame_nodes[i]] = st.frame_multipliers[i];
-      frame_gap[st.frame_nodes[i]] = st.frame_gaps[i];
-    }
-    fields.point_data["frame_force"] = frame_force;
-    fields.point_data["frame_gap"] = frame_gap;
+    fields.point_data["frame_force"] = nodal_field(nn, st.frame_nodes, st.frame_multipliers);
+    fields.point_data["frame_gap"] = nodal_field(nn, st.frame_nodes, st.frame_gaps);
   }
   add_damage_fields(s, st, z, fields);
   for (const auto& [name, values] : extra.point_data) fields.point_data[name] = values;

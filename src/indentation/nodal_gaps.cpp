@@ -56,9 +56,8 @@ void NodalGaps::add_shell_force(const TermPoint& p, cont::Vector& r_free) {
   for (int i = 0; i < size(); ++i) {
     const double lambda = p.z[first() + i];
     if (lambda == 0.0) continue;
-    const NodeGap g = gap(i, p.states, face_depth(candidates_[i], p.z, p.h), false);
-    for (int l = 0; l < 5; ++l)
-      if (slots_[i].eq[l] >= 0) r_free[slots_[i].eq[l]] -= lambda * g.gradient[l];
+    add_node_row_force(slots_[i], gap(i, p.states, face_depth(candidates_[i], p.z, p.h), false),
+                       lambda, r_free);
   }
 }
 

@@ -39,6 +39,12 @@ NodeRowSlots locate_node_row(const DofMap& dofs, int node, int m, int alpha,
   return s;
 }
 
+void add_node_row_force(const NodeRowSlots& s, const NodeGap& g, double lambda,
+                        Eigen::VectorXd& r_free) {
+  for (int l = 0; l < 5; ++l)
+    if (s.eq[l] >= 0) r_free[s.eq[l]] -= lambda * g.gradient[l];
+}
+
 void add_node_row_entries(const NodeRowSlots& s, const NodeGap& g, double lambda, double b,
                           bool derivative, double* J) {
   for (int r = 0; r < 5; ++r) {

@@ -29,6 +29,10 @@ struct NodeRowSlots {
 void add_node_row_pattern(const DofMap& dofs, int node, int m, int alpha, Triplets& t);
 NodeRowSlots locate_node_row(const DofMap& dofs, int node, int m, int alpha, const SparseMatrix& J);
 
+// r_free -= lambda G: the row's force lambda G on its node's free dofs.
+void add_node_row_force(const NodeRowSlots& s, const NodeGap& g, double lambda,
+                        Eigen::VectorXd& r_free);
+
 // The entries above, except the diagonal (and the alpha column), into J's values: `b` is
 // phi_b kappa, `lambda` the multiplier (the node block is added only if `derivative`).
 void add_node_row_entries(const NodeRowSlots& s, const NodeGap& g, double lambda, double b,

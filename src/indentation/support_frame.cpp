@@ -13,6 +13,18 @@ SupportFrame::SupportFrame(SupportFrameSetting setting) : setting_(std::move(set
   if (setting_.nodes.empty())
     throw_input("no node of the plate lies over the support frame", Where{"", "fixture", "", 0});
   normal_ = mesh.directors[setting_.nodes.front()];
+  // A node whose translation along n is held (a clamp) is no candidate: its gap cannot open or
+  // close to first order (its row's gradient on the free dofs is zero, a singular row where
+  // active), and the clamp's reaction is its support.
+  const DofMap& dofs = setting_.shell.dofs();
+  std::vector<int> free_nodes;
+  for (int n : setting_.nodes) {
+    double free = 0;
+    for (int l = 0; l < 3; ++l)
+      if (dofs.equation(DofMap::dof(n, l)) >= 0) free += normal_[l] * normal_[l];
+    if (free > 1e-12) free_nodes.push_back(n);
+  }
+  setting_.nodes = std::move(free_nodes);
   for (int n : setting_.nodes) {
     if ((mesh.directors[n] - normal_).norm() > 1e-8)
       throw_input(
@@ -46,9 +58,7 @@ void SupportFrame::add_shell_force(const TermPoint& p, cont::Vector& r_free) {
   for (int i = 0; i < size(); ++i) {
     const double mu = p.z[first() + i];
     if (mu == 0.0) continue;
-    const NodeGap g = gap(i, p, false);
-    for (int l = 0; l < 5; ++l)
-      if (slots_[i].eq[l] >= 0) r_free[slots_[i].eq[l]] -= mu * g.gradient[l];
+    add_node_row_force(slots_[i], gap(i, p, false), mu, r_free);
   }
 }
 

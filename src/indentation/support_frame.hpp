@@ -25,7 +25,7 @@ namespace si {
 
 struct SupportFrameSetting {
   const ShellPart& shell;
-  std::vector<int> nodes;  // the candidates: mesh nodes over the frame
+  std::vector<int> nodes;  // mesh nodes over the frame: the candidates, less those held along n
   double face_offset = 0;  // c of the supported (back) face along the director, mm
   double kappa = 1;        // N/mm
   NcpFunction ncp = NcpFunction::kFischerBurmeisterMin;

@@ -122,6 +122,15 @@ TEST(Fixture, BadInputNamesTheKey) {
 
 // ---- rows and Jacobian -----------------------------------------------------------------------
 
+// The trial points' multipliers start here (N): away from the NCP function's kink, whose
+// curvature would make the central differences' O(eps^2) error exceed the check's 1e-6 (measured:
+// the error falls as eps^2, 2.6e-3 at eps 1e-5 to 2.6e-7 at 1e-7, with multipliers from 0).
+constexpr double kOffTheKink = 20.0;
+// And a smaller central-difference step than the indenter's checks (1e-6): the frame's rows on
+// hundreds of nodes near their kink; 1e-7 is still above the roundoff floor (measured ~1e-6 rel.
+// at 1e-8).
+constexpr double kFrameStep = 1e-7;
+
 // The gap is the back face's height above the frame: a rigid lift of the plate by delta gives
 // delta at every frame node, and a turn of the director by theta gives c (cos theta - 1) more.
 TEST(SupportFrame, GapIsTheBackFaceHeightAboveTheFrame) {
@@ -149,19 +158,19 @@ TEST(SupportFrame, GapIsTheBackFaceHeightAboveTheFrame) {
 TEST(SupportFrame, NonlinearJacobianMatchesFiniteDifferences) {
   IndentationFixture f(fixture_case(kD7136), exact_solves());
   ASSERT_GT(f.problem->layout().frame, 0);
-  expect_jacobian_matches_fd(*f.problem, 0.3);
+  expect_jacobian_matches_fd(*f.problem, 0.3, 0.1, kOffTheKink, kFrameStep);
 }
 
 TEST(SupportFrame, LinearJacobianMatchesFiniteDifferences) {
   IndentationFixture f(fixture_case(kD7136, "linear"), exact_solves());
-  expect_jacobian_matches_fd(*f.problem, 0.3);
+  expect_jacobian_matches_fd(*f.problem, 0.3, 0.1, kOffTheKink, kFrameStep);
 }
 
 TEST(SupportFrame, NonlinearJacobianMatchesFiniteDifferences_DirectLu) {
   IndentationOptions o;
   o.linear_solver = JacobianSolverKind::kUmfpack;
   IndentationFixture f(fixture_case("{type: astm_d6264_opening, opening_diameter: 76.2 mm}"), o);
-  expect_jacobian_matches_fd(*f.problem, 0.3);
+  expect_jacobian_matches_fd(*f.problem, 0.3, 0.1, kOffTheKink, kFrameStep);
 }
 
 // The frame does not move with the depth: its rows of dF/dh are zero.
@@ -226,9 +235,11 @@ TEST(SupportFrame, D6264Backed_HertzLaw_ForceBalance_ReactionsUnderTheIndenterOn
   EXPECT_NEAR(s.local_indentation, s.depth, 1e-3 * s.depth);
 }
 
-// D7136: the plate bears on the cut-out's edges and lifts off the frame at its corners, where
-// the frame then carries nothing.
-TEST(SupportFrame, D7136_LiftsOffAtTheCorners_ReactionsOnlyWhereItBears) {
+// D7136: the plate bends into the cut-out and bears on its edges; the overhangs beyond them turn
+// up about those edges and lift off the frame, most at the middle of the plate's edges, where the
+// frame then carries nothing. With the preset's clamps (+-50, +-43.75) the plate's corners stay
+// down (measured: 3.4 N at each corner at 1 mm): the overhang twists about the clamps.
+TEST(SupportFrame, D7136_OverhangsLiftOff_ReactionsOnlyWhereItBears) {
   const CaseFile c = fixture_case(kD7136);
   const PathResult r = run_path(c, 1.0, 0.25);
   const IndentationState& s = r.points.back().state;
@@ -236,21 +247,28 @@ TEST(SupportFrame, D7136_LiftsOffAtTheCorners_ReactionsOnlyWhereItBears) {
   const ShellModel m = build_shell_model(c);
   double mu_max = 0;
   for (double mu : s.frame_multipliers) mu_max = std::max(mu_max, mu);
-  int corners = 0, edge_mid_bearing = 0;
+  const auto at = [&](const Vector3d& p, double x, double y) {
+    return std::abs(p.x() - x) < 1e-9 && std::abs(p.y() - y) < 1e-9;
+  };
+  int lifted = 0, bearing = 0;
   for (std::size_t i = 0; i < s.frame_nodes.size(); ++i) {
     const Vector3d& p = m.mesh.nodes[s.frame_nodes[i]];
-    if (std::abs(std::abs(p.x()) - 75) < 1e-9 && std::abs(std::abs(p.y()) - 50) < 1e-9) {
-      ++corners;
-      EXPECT_GT(s.frame_gaps[i], 1e-3) << "corner " << p.transpose();
-      EXPECT_LT(s.frame_multipliers[i], 1e-9 * mu_max);
+    const double g = s.frame_gaps[i], mu = s.frame_multipliers[i];
+    // The middle of each edge of the plate: lifted, no reaction.
+    if (at(p, 0, 50) || at(p, 0, -50) || at(p, 75, 0) || at(p, -75, 0)) {
+      ++lifted;
+      EXPECT_GT(g, 0.1) << p.transpose();
+      EXPECT_LT(std::abs(mu), 1e-9 * mu_max) << p.transpose();
     }
-    // The middle of the cut-out's long edges, where the plate bends most onto the frame.
-    if (std::abs(p.x()) < 1e-9 && std::abs(std::abs(p.y()) - 37.5) < 1e-9)
-      edge_mid_bearing += s.frame_multipliers[i] > 1e-3 * mu_max;
+    // The middle of the cut-out's long edges: bearing.
+    if (at(p, 0, 37.5) || at(p, 0, -37.5)) {
+      ++bearing;
+      EXPECT_GT(mu, 1e-3 * mu_max) << p.transpose();
+    }
   }
-  EXPECT_EQ(corners, 4);
-  EXPECT_EQ(edge_mid_bearing, 2);
-  EXPECT_LT(s.frame_contact_nodes, static_cast<int>(s.frame_nodes.size()));
+  EXPECT_EQ(lifted, 4);
+  EXPECT_EQ(bearing, 2);
+  EXPECT_LT(s.frame_contact_nodes, static_cast<int>(s.frame_nodes.size()) / 2);
 }
 
 // Against the same plate clamped on the cut-out's edge (same mesh, no frame): the clamped
@@ -270,15 +288,19 @@ TEST(SupportFrame, D7136_SofterThanThePlateClampedOnTheCutOutEdge) {
   clamped.mesh.line_y = 37.5;
   const PathResult a = run_path(framed, 1.0, 0.25);
   const PathResult b = run_path(clamped, 1.0, 0.25);
-  ASSERT_EQ(a.points.size(), b.points.size());
-  for (std::size_t k = 1; k < a.points.size(); ++k) {
-    const IndentationState &sa = a.points[k].state, &sb = b.points[k].state;
-    ASSERT_NEAR(sa.depth, sb.depth, 1e-12);
-    EXPECT_LE(sa.energy, sb.energy * (1 + 1e-9)) << sa.depth;
-    EXPECT_LT(sa.force, sb.force) << sa.depth;
-    std::printf("[ fixture  ] h = %.2f mm: frame %.1f N, clamped edge %.1f N (ratio %.3f)\n",
-                sa.depth, sa.force, sb.force, sa.force / sb.force);
-  }
+  // Natural steps land on the grid 0.25, 0.5, ... (a halved step adds points between).
+  int compared = 0;
+  for (const PathPoint& pa : a.points)
+    for (const PathPoint& pb : b.points) {
+      const IndentationState &sa = pa.state, &sb = pb.state;
+      if (sa.depth == 0 || std::abs(sa.depth - sb.depth) > 1e-12) continue;
+      ++compared;
+      EXPECT_LE(sa.energy, sb.energy * (1 + 1e-9)) << sa.depth;
+      EXPECT_LT(sa.force, sb.force) << sa.depth;
+      std::printf("[ fixture  ] h = %.2f mm: frame %.1f N, clamped edge %.1f N (ratio %.3f)\n",
+                  sa.depth, sa.force, sb.force, sa.force / sb.force);
+    }
+  EXPECT_GE(compared, 4);
 }
 
 // The same plate from a Gmsh file (the built-in mesh written as MSH 4.1, the frame and clamps
