@@ -120,6 +120,18 @@ TEST(Fixture, BadInputNamesTheKey) {
   EXPECT_EQ(error_key(kD7136, "shell: {type: flat_circular_plate, radius: 60 mm}\n"), "shell.type");
 }
 
+// A fully backed plate cannot bend and a shell has no through-thickness compliance: without a
+// local law the indenter could not move, and the run is refused naming the fixture.
+TEST(Fixture, D6264Backed_WithoutLocalLaw_IsRefused) {
+  std::string key = "(none)";
+  try {
+    IndentationSetup setup(fixture_case("{type: astm_d6264_backed}"), 1);
+  } catch (const Error& e) {
+    key = e.where().key;
+  }
+  EXPECT_EQ(key, "fixture.type");
+}
+
 // ---- rows and Jacobian -----------------------------------------------------------------------
 
 // The trial points' multipliers start here (N): away from the NCP function's kink, whose
