@@ -7,4 +7,8 @@ double contact_face_offset(const IndentationCase& c) {
   return c.contact.surface == ContactSurface::kOuter ? top : -c.laminate.reference_offset;
 }
 
+double back_face_offset(const IndentationCase& c) {
+  return -0.5 * c.laminate.thickness() - c.laminate.reference_offset;
+}
+
 }  // namespace si

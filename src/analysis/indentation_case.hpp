@@ -23,5 +23,8 @@ struct IndentationCase : ShellModelSpec {
 // The contact face offset of a case: the laminate's top face (contact.surface: outer) or its
 // mid-surface (contact.surface: mid, the paper's choice), measured from the reference surface.
 double contact_face_offset(const IndentationCase& c);
+// The offset of the laminate's bottom face (x3 = -t/2, the face on a support frame) from the
+// reference surface.
+double back_face_offset(const IndentationCase& c);
 
 }  // namespace si

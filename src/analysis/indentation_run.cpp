@@ -34,6 +34,7 @@ IndentationOptions options_of(const IndentationCase& c, int threads,
   IndentationOptions o;
   o.linear_solver = linear_solver;
   o.contact_offset = contact_face_offset(c);
+  o.frame_offset = back_face_offset(c);
   // Every node the indenter can reach within the path's depth, plus a margin for the shell's
   // own motion towards it; adapt() grows the set if contact still spreads past it.
   o.candidate_depth = 1.2 * c.path.depth_max + 1.0;
@@ -45,6 +46,11 @@ IndentationOptions options_of(const IndentationCase& c, int threads,
   o.interpolated.fbar = c.contact.fbar;
   if (c.contact.fbar) o.interpolated.fbar_top = analyze_vam(c.laminate).Fbar_top;
   o.local = local_contact_law(c);
+  if (c.fixture.type == FixtureType::kAstmD6264Backed && o.local.kind == LocalLawKind::kNone)
+    throw_input(
+        "a fully backed plate does not bend, and a shell has no through-thickness compliance: "
+        "the indenter could not move; give contact.local (hertz, yang_sun, vam, anisotropic)",
+        Where{c.file, "fixture.type", "astm_d6264_backed", 0});
   o.monitors = path_monitors(run_columns(monitored_criteria(c)));
   return o;
 }
@@ -450,6 +456,8 @@ IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolve
       std::snprintf(buf, sizeof buf, "[%g, %g, %g]", v.x(), v.y(), v.z());
       return std::string(buf);
     };
+    if (e.where().key.rfind("fixture", 0) == 0)  // the fixture's frame or its contact law
+      throw Error(e.kind(), e.reason(), Where{spec.file, e.where().key, e.where().value, 0});
     if (e.where().key == "indenter.direction")  // the direction itself is wrong, not the pose
       throw Error(e.kind(), e.reason(), Where{spec.file, e.where().key, e.where().value, 0});
     if (e.where().key == "element")  // a degenerate element (shell/quad4_shell.cpp)
@@ -468,9 +476,10 @@ IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolve
 
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback,
                                 const PathControl& control) {
-  // A power-law local contact is nonlinear even with linear kinematics: no fast path then.
-  const bool fast =
-      setup.model.kinematics == Kinematics::kLinear && setup.problem->num_local_unknowns() == 0;
+  // A power-law local contact is nonlinear even with linear kinematics, and the fast path knows
+  // the indenter's rows only (not a support frame's): no fast path then.
+  const bool fast = setup.model.kinematics == Kinematics::kLinear &&
+                    setup.problem->num_local_unknowns() == 0 && !setup.problem->support_frame();
   PathResult r = fast ? run_linear(setup, callback)
                  : setup.spec.contact.solver == ContactSolver::kActiveSet
                      ? run_active_set(setup, callback)

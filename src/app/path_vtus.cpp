@@ -31,6 +31,14 @@ Eigen::MatrixXd mode_translations(const IndentationProblem& p, const cont::Vecto
   return largest > 0 ? Eigen::MatrixXd(u / largest) : u;
 }
 
+// Per-candidate values as a nodal field: zero at the nodes that are not candidates.
+Eigen::VectorXd nodal_field(int num_nodes, const std::vector<int>& nodes,
+                            const std::vector<double>& values) {
+  Eigen::VectorXd field = Eigen::VectorXd::Zero(num_nodes);
+  for (std::size_t i = 0; i < nodes.size(); ++i) field[nodes[i]] = values[i];
+  return field;
+}
+
 }  // namespace
 
 PathVtus::PathVtus(std::filesystem::path dir, const OutputSpec& output,
@@ -46,14 +54,13 @@ void PathVtus::write(const std::string& name, const IndentationSetup& s, const I
   const std::vector<NodeState> state = p.node_states(z);
   VtuFields fields =
       resultant_fields(s.model.mesh, p.assembler(), *s.model.element, s.model.law, state);
-  Eigen::VectorXd pressure = Eigen::VectorXd::Zero(s.model.mesh.num_nodes());
-  Eigen::VectorXd force = pressure;
-  for (std::size_t i = 0; i < st.nodes.size(); ++i) {
-    pressure[st.nodes[i]] = st.pressures[i];
-    force[st.nodes[i]] = st.multipliers[i];
+  const int nn = s.model.mesh.num_nodes();
+  fields.point_data["contact_pressure"] = nodal_field(nn, st.nodes, st.pressures);
+  fields.point_data["contact_force"] = nodal_field(nn, st.nodes, st.multipliers);
+  if (!st.frame_nodes.empty()) {  // a fixture's support frame: its reaction and gap per node
+    fields.point_data["frame_force"] = nodal_field(nn, st.frame_nodes, st.frame_multipliers);
+    fields.point_data["frame_gap"] = nodal_field(nn, st.frame_nodes, st.frame_gaps);
   }
-  fields.point_data["contact_pressure"] = pressure;
-  fields.point_data["contact_force"] = force;
   add_damage_fields(s, st, z, fields);
   if (mode != nullptr) {
     fields.point_data["critical_mode"] = *mode;

@@ -49,4 +49,15 @@ NodeGap linearized_node_gap(const Indenter& indenter, const Vector3d& direction,
                             const NodeContactGeometry& node, const NodeState& reference,
                             const Vector5d& coordinates, double travel);
 
+// The gap of the node's contact point to a fixed plane {y : normal . y = level} on the side the
+// unit normal points to (a rigid support frame under the shell, indentation/support_frame.hpp):
+//     g = normal . (X + u + c d) - level,   G = [n ; c E^T n],   dG as above with a = n, A = 0.
+// Always `hits`; touch_travel is not used.
+NodeGap plane_gap(const Vector3d& normal, double level, const NodeContactGeometry& node,
+                  const NodeState& state, bool want_derivative);
+
+// The plane gap linearised about the reference state: g(reference) + G0 . coordinates.
+NodeGap linearized_plane_gap(const Vector3d& normal, double level, const NodeContactGeometry& node,
+                             const NodeState& reference, const Vector5d& coordinates);
+
 }  // namespace si

@@ -19,39 +19,15 @@ void ContactRows::set_candidates(const std::vector<int>& nodes) {
 }
 
 void ContactRows::add_pattern(Triplets& t) const {
-  const int alpha = approach_->alpha_index();
-  for (int i = 0; i < size(); ++i) {
-    const int n = candidates_[i], m = first() + i;
-    std::array<int, 5> eq{};
-    for (int l = 0; l < 5; ++l) eq[l] = shell().dofs().equation(DofMap::dof(n, l));
-    for (int r : eq) {
-      if (r < 0) continue;
-      t.emplace_back(r, m, 0.0);
-      t.emplace_back(m, r, 0.0);
-      for (int c : eq)
-        if (c >= 0) t.emplace_back(r, c, 0.0);
-    }
-    t.emplace_back(m, m, 0.0);
-    if (alpha >= 0) t.emplace_back(m, alpha, 0.0);
-  }
+  for (int i = 0; i < size(); ++i)
+    add_node_row_pattern(shell().dofs(), candidates_[i], first() + i, approach_->alpha_index(), t);
 }
 
 void ContactRows::locate(const SparseMatrix& J) {
-  const int alpha = approach_->alpha_index();
-  slots_.assign(candidates_.size(), {});
-  for (int i = 0; i < size(); ++i) {
-    Slots& s = slots_[i];
-    const int m = first() + i;
-    for (int l = 0; l < 5; ++l) s.eq[l] = shell().dofs().equation(DofMap::dof(candidates_[i], l));
-    for (int r = 0; r < 5; ++r) {
-      s.column[r] = s.eq[r] >= 0 ? value_slot(J, s.eq[r], m) : -1;
-      s.row[r] = s.eq[r] >= 0 ? value_slot(J, m, s.eq[r]) : -1;
-      for (int c = 0; c < 5; ++c)
-        s.block[5 * r + c] = s.eq[r] >= 0 && s.eq[c] >= 0 ? value_slot(J, s.eq[r], s.eq[c]) : -1;
-    }
-    s.diagonal = value_slot(J, m, m);
-    s.alpha_column = alpha >= 0 ? value_slot(J, m, alpha) : -1;
-  }
+  slots_.clear();
+  for (int i = 0; i < size(); ++i)
+    slots_.push_back(
+        locate_node_row(shell().dofs(), candidates_[i], first() + i, approach_->alpha_index(), J));
 }
 
 double ContactRows::face_depth(int node, const cont::Vector& z, double h) const {

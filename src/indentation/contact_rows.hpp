@@ -13,13 +13,13 @@
 // contact point the indenter can now reach within that depth (the set follows the deformed shell).
 #pragma once
 
-#include <array>
 #include <vector>
 
 #include "contact/ncp_function.hpp"
 #include "indentation/contact_body.hpp"
 #include "indentation/contact_term.hpp"
 #include "indentation/local_approach.hpp"
+#include "indentation/node_row.hpp"
 #include "indentation/shell_part.hpp"
 
 namespace si {
@@ -69,15 +69,8 @@ class ContactRows : public ContactTerm {
   double pressure_area_of(int i) const { return pressure_area(i); }
 
  protected:
-  // Value slots in J of candidate i's entries on its node's equations (-1 where prescribed).
-  struct Slots {
-    std::array<int, 5> eq{};      // equations of the node's 5 dofs
-    std::array<int, 25> block{};  // (eq[r], eq[c]) at 5 r + c
-    std::array<int, 5> column{};  // (eq[r], multiplier)
-    std::array<int, 5> row{};     // (multiplier, eq[c])
-    int diagonal = -1;            // (multiplier, multiplier)
-    int alpha_column = -1;        // (multiplier, alpha), with a local law's alpha
-  };
+  // Value slots in J of candidate i's entries on its node's equations.
+  using Slots = NodeRowSlots;
 
   // Candidate i's gap (mm) at the face depth `depth`, far beside the indenter's path.
   virtual double gap_value(int i, const TermPoint& p, double depth) const = 0;

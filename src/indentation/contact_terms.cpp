@@ -18,6 +18,13 @@ std::unique_ptr<ContactRows> make_rows(const IndentationOptions& o, const Contac
 ContactParts make_contact_parts(const IndentationOptions& options,
                                 const ContactRowsSetting& setting) {
   ContactParts parts;
+  const std::vector<int>& frame_nodes = setting.shell.model().frame_nodes;
+  if (!frame_nodes.empty()) {
+    auto frame = std::make_unique<SupportFrame>(SupportFrameSetting{
+        setting.shell, frame_nodes, options.frame_offset, setting.kappa, setting.ncp});
+    parts.frame = frame.get();
+    parts.terms.push_back(std::move(frame));
+  }
   std::unique_ptr<ContactRows> rows = make_rows(options, setting);
   parts.indenter = rows.get();
   const double sym = setting.shell.model().symmetry_factor;

@@ -13,7 +13,10 @@
 namespace si {
 
 struct IndentationOptions {
-  double contact_offset = 0;    // c: contact face above the reference surface along d, mm
+  double contact_offset = 0;  // c: contact face above the reference surface along d, mm
+  // c of the face that rests on a support frame (the back face), with a model that has one
+  // (ShellModel::frame_nodes, support_frame.hpp).
+  double frame_offset = 0;
   double candidate_depth = 12;  // mm of travel past first touch (contact_rows.hpp)
   // Fischer-Burmeister on the feasible quadrant, min outside (ncp_function.hpp); kMin for the
   // active-set cross-check.

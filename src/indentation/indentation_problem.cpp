@@ -77,7 +77,9 @@ void IndentationProblem::build_pattern() {
 }
 
 UnknownLayout IndentationProblem::layout() const {
-  return {shell_.size(), contact_->size(), size() - shell_.size() - contact_->size()};
+  const int frame = parts_.frame ? parts_.frame->size() : 0;
+  return {shell_.size(), frame, contact_->size(),
+          size() - shell_.size() - frame - contact_->size()};
 }
 
 int IndentationProblem::size() const {
@@ -197,6 +199,9 @@ double IndentationProblem::inner(const cont::Vector& a, const cont::Vector& b) c
   if (nc > 0)
     sum += a.segment(lambda, nc).dot(b.segment(lambda, nc)) /
            (static_cast<double>(nc) * kappa_ * kappa_);
+  if (u.frame > 0)
+    sum += a.segment(u.frame_begin(), u.frame).dot(b.segment(u.frame_begin(), u.frame)) /
+           (static_cast<double>(u.frame) * kappa_ * kappa_);
   return sum;
 }
 
@@ -328,6 +333,8 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   quantities(z, s, h, out);
   const TermPoint p{z, h, s};
   for (const auto& t : parts_.terms) t->outputs(p, out);
+  // The support frame is a support too: its force joins the reaction along -e.
+  if (parts_.frame) out.reaction -= out.frame_force * parts_.frame->normal().dot(body_.direction());
   cached_z_ = z;
   cached_h_ = h;
   cached_state_ = std::make_unique<IndentationState>(out);

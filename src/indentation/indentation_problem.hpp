@@ -36,14 +36,16 @@
 
 namespace si {
 
-// Where each kind of unknown sits in z = [x ; lambda ; alpha].
+// Where each kind of unknown sits in z = [x ; mu ; lambda ; alpha].
 struct UnknownLayout {
   int shell = 0;        // x: z[0, shell)
-  int multipliers = 0;  // lambda: z[shell, shell + multipliers)
+  int frame = 0;        // mu: the support frame's multipliers (support_frame.hpp), if any
+  int multipliers = 0;  // lambda: z[shell + frame, shell + frame + multipliers)
   int local = 0;        // alpha: 1 with a power-law local contact, else 0
-  int lambda_begin() const { return shell; }
-  int alpha_index() const { return shell + multipliers; }
-  int size() const { return shell + multipliers + local; }
+  int frame_begin() const { return shell; }
+  int lambda_begin() const { return shell + frame; }
+  int alpha_index() const { return shell + frame + multipliers; }
+  int size() const { return shell + frame + multipliers + local; }
 };
 
 class IndentationProblem : public cont::Problem {
@@ -61,7 +63,8 @@ class IndentationProblem : public cont::Problem {
   bool solve(cont::Vector& b) override;
   bool residual_p(const cont::Vector& z, double h, cont::Vector& out) override;
   // Arclength metric: mean square of the shell coordinates (mm, rad; a power law's alpha counts
-  // as one more) plus the mean square of the indenter's multipliers over kappa (mm), so that with
+  // as one more) plus the mean square of the indenter's multipliers over kappa (mm) and that of
+  // the support frame's, so that with
   // parameter weight 1 an arclength step is about a depth step (each shell point moves at most as
   // much as the indenter).
   double inner(const cont::Vector& a, const cont::Vector& b) const override;
@@ -107,6 +110,8 @@ class IndentationProblem : public cont::Problem {
   void restore_candidates(const std::vector<int>& nodes);
   int num_shell_unknowns() const { return shell_.size(); }
   int num_local_unknowns() const { return layout().local; }
+  // The support frame's rows (support_frame.hpp), or nullptr: the model rests on none.
+  const SupportFrame* support_frame() const { return parts_.frame; }
   const LocalContactLaw& local_law() const { return options_.local; }
   // The whole-shell force scale for tolerances: max(T_N, kappa * 1 mm * 1e-3) at z.
   double force_scale(const cont::Vector& z) const;

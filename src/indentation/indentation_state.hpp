@@ -15,7 +15,8 @@ namespace si {
 struct IndentationState {
   double depth = 0;            // h, mm
   double force = 0;            // T_N = sum of multipliers, N
-  double reaction = 0;         // support reactions along -e, N (equals force at equilibrium)
+  double reaction = 0;         // support reactions along -e, N (equals force at equilibrium), a
+                               // support frame's included
   double apex_deflection = 0;  // apex mid-surface displacement along e, mm
   double contact_radius = 0;   // largest distance from the indenter's axis of a node in contact
   double contact_area = 0;     // tributary area of the nodes in contact, mm^2
@@ -38,6 +39,14 @@ struct IndentationState {
   std::vector<double> gaps;         // g per candidate, mm
   std::vector<double> pressures;    // lambda / tributary area per candidate, MPa (interpolated
                                     // traction: lambda / w = t-bar, the nodal traction)
+  // A support frame under the shell (indentation/support_frame.hpp; zero and empty without):
+  // its whole-shell force along its normal (N), the nodes bearing on it, and per frame candidate
+  // its node, multiplier (N) and gap to the frame (mm).
+  double frame_force = 0;
+  int frame_contact_nodes = 0;
+  std::vector<int> frame_nodes;
+  std::vector<double> frame_multipliers;
+  std::vector<double> frame_gaps;
   // The largest failure index of each criterion (by Criterion) over the monitored points, where
   // the run monitors damage (IndentationOptions::probe; index NaN otherwise).
   std::array<MonitoredFailure, kCriteria> failure;

@@ -56,9 +56,8 @@ void NodalGaps::add_shell_force(const TermPoint& p, cont::Vector& r_free) {
   for (int i = 0; i < size(); ++i) {
     const double lambda = p.z[first() + i];
     if (lambda == 0.0) continue;
-    const NodeGap g = gap(i, p.states, face_depth(candidates_[i], p.z, p.h), false);
-    for (int l = 0; l < 5; ++l)
-      if (slots_[i].eq[l] >= 0) r_free[slots_[i].eq[l]] -= lambda * g.gradient[l];
+    add_node_row_force(slots_[i], gap(i, p.states, face_depth(candidates_[i], p.z, p.h), false),
+                       lambda, r_free);
   }
 }
 
@@ -71,22 +70,9 @@ void NodalGaps::add_jacobian(const TermPoint& p, double* J,
     const NodeGap g = gap(i, p.states, p.h - dent.u, nonlinear && lambda != 0.0);
     const NcpValue phi = complementarity(lambda, g.gap + layer_at(candidates_[i], lambda));
     const Slots& s = slots_[i];
-    if (condensed) {
-      ContactJacobianRow row;
-      row.eq = s.eq;
-      for (int r = 0; r < 5; ++r) row.gradient[r] = g.gradient[r];
-      row.a = multiplier_diagonal(i, phi);
-      row.b = phi.d_b * kappa();
-      condensed->push_back(row);
-    }
-    for (int r = 0; r < 5; ++r) {
-      if (s.eq[r] < 0) continue;
-      J[s.column[r]] -= g.gradient[r];
-      J[s.row[r]] += phi.d_b * kappa() * g.gradient[r];
-      if (nonlinear && lambda != 0.0)
-        for (int c = 0; c < 5; ++c)
-          if (s.eq[c] >= 0) J[s.block[5 * r + c]] -= lambda * g.gradient_derivative(r, c);
-    }
+    const double b = phi.d_b * kappa();
+    if (condensed) condensed->push_back(condensed_node_row(s, g, multiplier_diagonal(i, phi), b));
+    add_node_row_entries(s, g, lambda, b, nonlinear && lambda != 0.0, J);
     add_multiplier_terms(i, phi, g.hits ? dent.rate : 0.0, J);
   }
 }

@@ -61,18 +61,31 @@ std::vector<NodeState> ShellPart::states(const Eigen::VectorXd& x) const {
   return s;
 }
 
+Vector5d ShellPart::chart_coordinates(int node, const std::vector<NodeState>& s) const {
+  // The node's chart coordinates (u, theta . V1, theta . V2): the linear mode's dofs.
+  const NodeState& ref = chart_.reference(node);
+  const Vector3d theta = chart_.rotation_vector(node, s[node].d);
+  Vector5d q;
+  q << s[node].u, theta.dot(ref.v1), theta.dot(ref.v2);
+  return q;
+}
+
 NodeGap ShellPart::gap(const Indenter& indenter, const Vector3d& direction,
                        const NodeContactGeometry& geometry, int node,
                        const std::vector<NodeState>& s, double travel, double guess,
                        bool derivative) const {
   if (nonlinear())
     return node_gap(indenter, direction, geometry, s[node], travel, guess, derivative);
-  // The node's chart coordinates (u, theta . V1, theta . V2): the linear mode's dofs.
-  const NodeState& ref = chart_.reference(node);
-  const Vector3d theta = chart_.rotation_vector(node, s[node].d);
-  Vector5d q;
-  q << s[node].u, theta.dot(ref.v1), theta.dot(ref.v2);
-  return linearized_node_gap(indenter, direction, geometry, ref, q, travel);
+  return linearized_node_gap(indenter, direction, geometry, chart_.reference(node),
+                             chart_coordinates(node, s), travel);
+}
+
+NodeGap ShellPart::plane_gap(const Vector3d& normal, double level,
+                             const NodeContactGeometry& geometry, int node,
+                             const std::vector<NodeState>& s, bool derivative) const {
+  if (nonlinear()) return si::plane_gap(normal, level, geometry, s[node], derivative);
+  return linearized_plane_gap(normal, level, geometry, chart_.reference(node),
+                              chart_coordinates(node, s));
 }
 
 void ShellPart::energy_and_reaction(const Eigen::VectorXd& x, double& energy, double& reaction) {

@@ -55,6 +55,11 @@ class ShellPart {
               const NodeContactGeometry& geometry, int node, const std::vector<NodeState>& s,
               double travel, double guess, bool derivative) const;
 
+  // The gap of mesh node `node` to the fixed plane {normal . y = level} (contact/node_gap.hpp),
+  // exact or linearised like gap().
+  NodeGap plane_gap(const Vector3d& normal, double level, const NodeContactGeometry& geometry,
+                    int node, const std::vector<NodeState>& s, bool derivative) const;
+
   // Whole-shell strain energy (N mm) and support reaction along the direction of travel (N).
   void energy_and_reaction(const Eigen::VectorXd& x, double& energy, double& reaction);
   // k11, k12 + k21, k22 at mesh node `node`, averaged over its elements (1/mm).
@@ -67,6 +72,8 @@ class ShellPart {
 
  private:
   void build_reaction_row();
+  // Linear kinematics: node `node`'s chart coordinates at s (its linear mode's dofs).
+  Vector5d chart_coordinates(int node, const std::vector<NodeState>& s) const;
 
   const ShellModel& model_;
   DofMap dofs_;

@@ -10,6 +10,7 @@
 
 #include "core/units.hpp"
 #include "io/damage_reader.hpp"
+#include "io/fixture_reader.hpp"
 #include "io/laminate_reader.hpp"
 #include "io/material_reader.hpp"
 #include "io/named_sets_reader.hpp"
@@ -113,15 +114,15 @@ void read_mesh_file(const MapReader& map, MeshSpec& mesh) {
   mesh.file = (file.is_absolute() ? file : base / file).string();
   if (!std::filesystem::is_regular_file(mesh.file))
     throw_input("cannot open the mesh file " + mesh.file +
-                    " (a relative path is taken from the "
-                    "case file's directory)",
+                    " (a relative path is taken from the case file's directory)",
                 map.where("file"));
   mesh.reorient = map.choice_or("reorient", kBooleans, mesh.reorient);
   mesh.flip = map.choice_or("flip", kBooleans, mesh.flip);
 }
 
-MeshSpec read_mesh(const MapReader& top, ShellType shell) {
+MeshSpec read_mesh(const MapReader& top, ShellType shell, bool graded) {
   MeshSpec mesh;
+  mesh.graded = graded;  // a fixture's plate: graded unless `grading` says otherwise
   const auto map = section(top, "mesh");
   if (!map) return mesh;
   if (map->has("file")) {
@@ -433,7 +434,8 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   if (root.IsNull()) throw_input("the case file is empty", Where{file_label, "", "", 0});
   const MapReader top(root, Where{file_label, "", "", 0});
   top.allow_only({"material", "materials", "laminate", "shell", "mesh", "kinematics", "indenter",
-                  "contact", "path", "output", "load", "loads", "supports", "static", "damage"});
+                  "contact", "path", "output", "load", "loads", "supports", "static", "damage",
+                  "fixture"});
   top.at("laminate");  // say it is missing before reading the rest
   const MaterialTable materials = read_materials(top);
   const Kinematics kinematics =
@@ -441,7 +443,8 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   // Read in file order (the first error found is the one reported), then put together.
   Laminate laminate = read_laminate(top.at("laminate"), top.where("laminate"), materials);
   ShellSpec shell = read_shell(top, has_mesh_file(top));
-  MeshSpec mesh = read_mesh(top, shell.type);
+  FixtureSpec fixture = read_fixture(top, shell);
+  MeshSpec mesh = read_mesh(top, shell.type, fixture.type != FixtureType::kNone);
   IndenterSpec indenter = read_indenter(top);
   ContactSpec contact = read_contact(top, kinematics, indenter);
   PathSpec path = read_path(top, contact);
@@ -452,7 +455,7 @@ CaseFile parse_case_file(const std::string& yaml_text, const std::string& file_l
   std::vector<std::string> static_record = read_static_record(top);
   std::optional<DamageSpec> damage = read_damage(top, laminate);
   return CaseFile{{{std::move(laminate), std::move(shell), std::move(mesh), kinematics,
-                    std::move(load), file_label},
+                    std::move(load), file_label, std::move(fixture)},
                    std::move(indenter),
                    contact,
                    std::move(path),

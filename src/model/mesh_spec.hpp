@@ -18,6 +18,10 @@ struct MeshSpec {
   // Rectangular plates and cylindrical panels: graded like the cap (size_apex within
   // refine_radius, growing to size_edge) instead of uniform at size_apex.
   bool graded = false;
+  // Rectangular plates: mesh lines at x = +-line_x and y = +-line_y (0: none), a station moved or
+  // inserted there (model/fixture.hpp with_station); a fixture puts them on its cut-out's edges.
+  double line_x = 0;  // mm
+  double line_y = 0;  // mm
   // A mesh from a Gmsh file (path resolved against the case file's directory; empty: the
   // built-in mesh of `shell`), with the reader's options (model/gmsh_reader.hpp).
   std::string file;

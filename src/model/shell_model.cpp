@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/units.hpp"
 #include "model/cylindrical_panel_mesh.hpp"
+#include "model/fixture.hpp"
 #include "model/gmsh_reader.hpp"
 #include "model/graded_stations.hpp"
 #include "model/imported_mesh_sets.hpp"
@@ -48,6 +49,20 @@ std::vector<double> graded(double half_length, const MeshSpec& spec) {
   return spec.symmetry == Symmetry::kQuarter ? half : mirrored(half);
 }
 
+// The stations of a plate side with a mesh line at +-line (graded or uniform), mirrored for the
+// full model.
+std::vector<double> stations_with_line(double half_length, double line, const MeshSpec& spec) {
+  std::vector<double> half;
+  if (spec.graded) {
+    half = centred_graded_stations(half_length, line_grading(spec));
+  } else {
+    const int n = even_count(2 * half_length, spec.size_apex) / 2;
+    for (int k = 0; k <= n; ++k) half.push_back(half_length * k / n);
+  }
+  half = with_station(half, line);
+  return spec.symmetry == Symmetry::kQuarter ? half : mirrored(half);
+}
+
 // The subset of `set` whose coordinate `axis` has the sign of `sign`.
 std::vector<int> side_of(const Mesh& m, const std::string& set, int axis, double sign) {
   std::vector<int> out;
@@ -56,10 +71,23 @@ std::vector<int> side_of(const Mesh& m, const std::string& set, int axis, double
   return out;
 }
 
+// The nodes on the rectangle |x| = line_x, |y| <= line_y or |y| = line_y, |x| <= line_x.
+std::vector<int> rectangle_nodes(const Mesh& m, const MeshSpec& spec) {
+  const double tol = 1e-9 * (spec.line_x + spec.line_y);
+  return nodes_where(m, [&](const Vector3d& p) {
+    const double x = std::abs(p.x()), y = std::abs(p.y());
+    return (std::abs(x - spec.line_x) < tol && y < spec.line_y + tol) ||
+           (std::abs(y - spec.line_y) < tol && x < spec.line_x + tol);
+  });
+}
+
 Mesh rectangular_mesh(const ShellSpec& shell, const MeshSpec& spec) {
   const bool quarter = spec.symmetry == Symmetry::kQuarter;
   Mesh m;
-  if (spec.graded) {
+  if (spec.line_x > 0 || spec.line_y > 0) {
+    m = rectangular_plate_mesh(stations_with_line(shell.length_x / 2, spec.line_x, spec),
+                               stations_with_line(shell.length_y / 2, spec.line_y, spec));
+  } else if (spec.graded) {
     m = rectangular_plate_mesh(graded(shell.length_x / 2, spec), graded(shell.length_y / 2, spec));
   } else {
     const int nx = even_count(shell.length_x, spec.size_apex);
@@ -72,6 +100,7 @@ Mesh rectangular_mesh(const ShellSpec& shell, const MeshSpec& spec) {
   }
   set_node_set(m, "x+", m.node_sets.at("edge_x1"));
   set_node_set(m, "y+", m.node_sets.at("edge_y1"));
+  if (spec.line_x > 0 && spec.line_y > 0) set_node_set(m, "window_edge", rectangle_nodes(m, spec));
   if (quarter) {
     // x = 0 and y = 0 are the symmetry planes.
     set_node_set(m, "apex", {0});
@@ -194,8 +223,13 @@ Mesh shell_mesh_in_case(const ShellModelSpec& c, std::vector<std::string>& warni
     }
     return std::move(imported.mesh);
   }
+  MeshSpec spec = c.mesh;
+  if (c.fixture.type == FixtureType::kAstmD7136) {  // mesh lines on the cut-out's edges
+    spec.line_x = 0.5 * c.fixture.window_x;
+    spec.line_y = 0.5 * c.fixture.window_y;
+  }
   try {
-    return shell_mesh(c.shell, c.mesh);
+    return shell_mesh(c.shell, spec);
   } catch (const Error& e) {
     const std::string& key = e.where().key;
     const bool mesh_key = key.rfind("size_", 0) == 0 || key == "refine_radius";
@@ -303,11 +337,17 @@ SupportType support_type(EdgeCondition edge) {
 // Supports of a case with `supports:` entries or a mesh file (named_supports.hpp): the entries,
 // `shell.edge` on the rest of the boundary, the symmetry planes, and for a flat plate the
 // in-plane rigid-body motions that simply supported or free edges leave.
-SupportPlan named_supports(const ShellModelSpec& c, Mesh& mesh) {
+// With a fixture (apply_fixture: its clamps in `fixture_supports`) the plate's edges are free and
+// the frame holds it: nothing else need.
+SupportPlan named_supports(const ShellModelSpec& c, Mesh& mesh,
+                           const std::vector<Support>& fixture_supports) {
   const bool quarter = c.mesh.symmetry == Symmetry::kQuarter;
+  const bool on_frame = c.fixture.type != FixtureType::kNone;
   const std::vector<std::string> planes =
       quarter ? std::vector<std::string>{"symmetry_x", "symmetry_y"} : std::vector<std::string>{};
-  SupportPlan plan = plan_supports(mesh, c.shell.supports, support_type(c.shell.edge), planes);
+  SupportPlan plan = plan_supports(
+      mesh, c.shell.supports, support_type(on_frame ? EdgeCondition::kFree : c.shell.edge), planes);
+  plan.supports.insert(plan.supports.end(), fixture_supports.begin(), fixture_supports.end());
   if (quarter) {
     plan.supports.push_back({SupportKind::kSymmetryPlane, "symmetry_x", 0, {}});
     plan.supports.push_back({SupportKind::kSymmetryPlane, "symmetry_y", 1, {}});
@@ -317,7 +357,7 @@ SupportPlan named_supports(const ShellModelSpec& c, Mesh& mesh) {
   } catch (const Error& e) {
     throw Error(e.kind(), e.reason(), Where{c.file, "shell.edge", text_of_edge(c.shell.edge), 0});
   }
-  if (plan.supports.empty() && plan.displacements.empty())
+  if (plan.supports.empty() && plan.displacements.empty() && !on_frame)
     throw_input(
         "nothing holds the shell (every edge free, no support entry): it would move as a "
         "rigid body",
@@ -379,8 +419,12 @@ ShellModel build_shell_model(const ShellModelSpec& c) {
   model.law.G = vam.G;
   check_mesh_size(c);
   model.mesh = shell_mesh_in_case(c, model.warnings);
+  std::vector<Support> fixture_supports;
+  if (c.fixture.type != FixtureType::kNone)
+    model.frame_nodes = apply_fixture(c.fixture, c.file, model.mesh, fixture_supports);
   check_set_names(c, model.mesh);
-  const bool named = !c.mesh.file.empty() || !c.shell.supports.empty();
+  const bool named =
+      !c.mesh.file.empty() || !c.shell.supports.empty() || !model.frame_nodes.empty();
   if (!named && c.shell.edge == EdgeCondition::kSimplySupported &&
       c.mesh.symmetry == Symmetry::kFull) {
     // Rim node of largest x (on the positive x axis for the plates).
@@ -399,7 +443,7 @@ ShellModel build_shell_model(const ShellModelSpec& c) {
   model.kinematics = c.kinematics;
   model.symmetry_factor = c.mesh.symmetry == Symmetry::kQuarter ? 4.0 : 1.0;
   if (named) {
-    SupportPlan plan = named_supports(c, model.mesh);
+    SupportPlan plan = named_supports(c, model.mesh, fixture_supports);
     model.supports = std::move(plan.supports);
     model.displacements = std::move(plan.displacements);
   } else {

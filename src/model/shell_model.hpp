@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "model/fixture_spec.hpp"
 #include "model/load_spec.hpp"
 #include "model/loads.hpp"
 #include "model/mesh.hpp"
@@ -39,6 +40,7 @@ struct ShellModelSpec {
   Kinematics kinematics = Kinematics::kNonlinear;
   std::optional<LoadSpec> load;  // only for load-controlled runs
   std::string file;              // the file (or label) the spec was read from, for messages
+  FixtureSpec fixture;           // a test fixture the plate rests on (none by default)
 };
 
 struct ShellModel {
@@ -52,6 +54,9 @@ struct ShellModel {
   // Whole-shell value = symmetry_factor * model value, for forces, reactions and energies
   // (4 for a quarter model, else 1).
   double symmetry_factor = 1;
+  // The nodes over a fixture's support frame (fixture.hpp; empty: no frame), the candidates of
+  // the indentation problem's support-frame contact (indentation/support_frame.hpp).
+  std::vector<int> frame_nodes;
   std::vector<std::string> warnings;  // for the user (e.g. the bernstein4 patch-test defect)
 
   int apex_node() const { return mesh.node_sets.at("apex").front(); }
