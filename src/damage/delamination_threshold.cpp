@@ -25,12 +25,8 @@ DelaminationThreshold delamination_threshold(const Matrix3d& D, double G_IIc,
     throw_input("the delamination threshold needs a positive bending stiffness D11, D22");
   const double mean = std::sqrt(out.D11 * out.D22);
   out.anisotropy = (out.D12 + 2 * out.D66) / mean;
-  // Olsson's D* = sqrt(D11 D22 (A + 1)/2) (Compos. Part A 32 (2001) 1207, after AIAA J. 30
-  // (1992) 1587): the isotropic plate with the point-load impedance 8 sqrt(m D*) of the specially
-  // orthotropic infinite plate, whose exact D* is the angular mean D*^(-1/2) = (2/pi)
-  // int_0^(pi/2) (D11 c^4 + 2 (D12 + 2 D66) c^2 s^2 + D22 s^4)^(-1/2); the closed form is that mean
-  // to 1.5 % for 0.1 <= A <= 3 and exact at A = 1 (tests/damage/test_delamination_threshold.cpp).
-  // (The form sqrt(D11 D22)(A + 1)/2 used before issue 16's last stage is 27 % off at A = 2.3.)
+  // Olsson's closed form (header). The form sqrt(D11 D22)(A + 1)/2 used before issue 16's last
+  // stage is not the impedance mean: 27 % off at A = 2.3.
   out.D_effective = stiffness == EffectiveBendingStiffness::kOlsson
                         ? mean * std::sqrt((out.anisotropy + 1) / 2)
                         : mean;
