@@ -36,6 +36,7 @@ import time
 
 import matplotlib
 
+from paper_figures import save  # one PNG at the reports' dpi
 from result_columns import (DELAMINATION_INDEX, DEPTH_MM, FORCE_N, HASHIN_INDEX,
                             MAX_STRESS_INDEX, TSAI_WU_INDEX)
 from study_support import (SOURCE_DIR, STUDIES_DIR, case_dirs, column, default_exe, load_json,
@@ -50,7 +51,6 @@ CRITERIA = (("max_stress", MAX_STRESS_INDEX, "maximum stress"),
             ("tsai_wu", TSAI_WU_INDEX, "Tsai-Wu"),
             ("hashin", HASHIN_INDEX, "Hashin"),
             ("delamination", DELAMINATION_INDEX, "Brewer-Lagace (interfaces)"))
-DPI = 100
 
 
 def parse_args():
@@ -181,12 +181,13 @@ def checks(run, cases):
 
 # ---- 3. Figures -----------------------------------------------------------------------------
 
-def save(fig, directory, name):
-    path = os.path.join(directory, name)
-    fig.tight_layout()
-    fig.savefig(path, dpi=DPI)
-    plt.close(fig)
-    return path
+def finish(fig, ax, xlabel, ylabel, directory, name):
+    """Labels, grid and legend of a one-axes figure, saved."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    return save(fig, directory, name)
 
 
 def index_figure(cases, directory):
@@ -214,11 +215,8 @@ def apex_figure(cases, directory):
             ax.plot([r["hashin_index"] for r in c["apex"]], [r["x3_mm"] for r in c["apex"]],
                     marker=".", label=f"{c['layup']} (h = {c['apex'][0][DEPTH_MM]:.3f} mm)")
     ax.axvline(1.0, color="k", lw=0.8, ls="--")
-    ax.set_xlabel("Hashin index at the apex")
-    ax.set_ylabel("x3 (mm, outer contacted face up)")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
-    return save(fig, directory, "damage_apex_profile.png")
+    return finish(fig, ax, "Hashin index at the apex", "x3 (mm, outer contacted face up)",
+                  directory, "damage_apex_profile.png")
 
 
 def force_figure(cases, directory):
@@ -233,11 +231,8 @@ def force_figure(cases, directory):
     thr = [(c["theta_deg"], c["threshold"]["load_N"] / 1000) for c in angle if c["threshold"]]
     if thr:
         ax.plot(*zip(*thr), "k--", marker="s", label="Davies-Zhang threshold (Olsson D*)")
-    ax.set_xlabel("theta (deg), [theta/-theta]2S")
-    ax.set_ylabel("onset force (kN)")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
-    return save(fig, directory, "damage_onset_force.png")
+    return finish(fig, ax, "theta (deg), [theta/-theta]2S", "onset force (kN)", directory,
+                  "damage_onset_force.png")
 
 
 # ---- 4. Report ------------------------------------------------------------------------------
