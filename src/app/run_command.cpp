@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -162,6 +163,42 @@ std::vector<std::string> write_path_files(const std::filesystem::path& dir,
   return written;
 }
 
+// What a run with a `damage:` section found, in words beside the table: each onset with its
+// mode and place, the Davies-Zhang threshold and, per impact energy, the depth and force where
+// the indenter's work reaches it, or that the path's work never does (an energy beyond the path
+// is reported, never extrapolated: docs/theory/failure.md 5).
+void print_damage_summary(const PathResult& r, std::ostream& out) {
+  for (const DamageOnset& o : r.damage.onsets) {
+    out << "damage onset: " << spelling(criterion_spellings(), o.criterion) << " ("
+        << spelling(failure_mode_spellings(), o.at.mode) << ", "
+        << (o.at.interface ? "interface " + std::to_string(o.at.ply) + "/" +
+                                 std::to_string(o.at.ply + 1)
+                           : "ply " + std::to_string(o.at.ply + 1) + " " +
+                                 spelling(ply_position_spellings(), o.at.position))
+        << ") at depth " << format_quantity(o.depth, Dimension::kLength) << ", force "
+        << format_quantity(o.force, Dimension::kForce) << ", work "
+        << format_quantity(o.work, Dimension::kEnergy) << "\n";
+  }
+  if (r.damage.threshold)
+    out << "Davies-Zhang delamination threshold: "
+        << format_quantity(r.damage.threshold->load, Dimension::kForce)
+        << (std::isnan(r.damage.threshold_depth)
+                ? " (not reached on the path)"
+                : ", reached at depth " +
+                      format_quantity(r.damage.threshold_depth, Dimension::kLength))
+        << "\n";
+  for (const EnergyPoint& e : r.damage.energies) {
+    out << "impact energy " << format_quantity(e.energy, Dimension::kEnergy) << ": ";
+    if (e.outcome == EnergyOutcome::kReached)
+      out << "depth " << format_quantity(e.depth, Dimension::kLength) << ", force "
+          << format_quantity(e.force, Dimension::kForce) << "\n";
+    else
+      out << "beyond the path (its largest work is "
+          << format_quantity(e.max_work, Dimension::kEnergy)
+          << "); not extrapolated: run deeper (path.depth_max) to reach it\n";
+  }
+}
+
 }  // namespace
 
 int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream& err) {
@@ -247,6 +284,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
                   ? " (" + cont::criticality_name(e.criticality) + ")"
                   : "")
           << " at depth " << e.p << " mm\n";
+  print_damage_summary(r, out);
 
   std::vector<std::string> written = write_path_files(dir, formats, setup, r, vtus, damage_rows);
   if (event_files > 0)

@@ -216,6 +216,35 @@ TEST(RunCommand, LocalLawAddsTheLocalIndentationColumnToTheTable) {
               1e-9);
 }
 
+// Issue 16: an impact energy above the path's total work is said to be beyond the path (in the
+// printed summary and as `beyond_path` with no depth in path.json), never extrapolated; one the
+// path reaches gets its depth, and the onset is named with its mode. Linear quarter cap, 0.5 mm:
+// the work at 0.5 mm is about 1.4 J, far below 10 J.
+TEST(RunCommand, ImpactEnergyBeyondThePathIsSaidNotExtrapolated) {
+  const fs::path dir = fresh_dir("run_energy_beyond");
+  const fs::path c =
+      write_case(dir, cap_case("linear", "{shape: sphere, radius: 12.7 mm}",
+                               "{method: natural, depth_max: 0.5 mm, step: 0.25 mm}") +
+                          "damage: {criteria: [hashin], impact_energies: [0.5 N*mm, 10 J]}\n");
+  const auto r = run_cli("run '" + c.string() + "' --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "impact energy 10000 N*mm: beyond the path (its largest work is "))
+      << r.output;
+  EXPECT_TRUE(contains(r.output, "not extrapolated")) << r.output;
+  EXPECT_TRUE(contains(r.output, "damage onset: hashin (")) << r.output;
+  EXPECT_TRUE(contains(r.output, "impact energy 0.5 N*mm: depth ")) << r.output;
+  const auto json = nlohmann::json::parse(testing::read_file(dir / "out" / "path.json"));
+  const auto& energies = json["damage"]["impact_energies"];
+  ASSERT_EQ(energies.size(), 2u);
+  EXPECT_EQ(energies[0]["outcome"], "reached");
+  EXPECT_GT(energies[0]["depth_mm"].get<double>(), 0.0);
+  EXPECT_LT(energies[0]["depth_mm"].get<double>(), 0.5);
+  EXPECT_EQ(energies[1]["outcome"], "beyond_path");
+  EXPECT_TRUE(energies[1]["depth_mm"].is_null());
+  EXPECT_TRUE(energies[1]["force_N"].is_null());
+  EXPECT_LT(energies[1]["max_work_Nmm"].get<double>(), 10000.0);
+}
+
 // Ctrl-C (SIGINT) stops the run after the current point: every converged point is written, the
 // status says the run was stopped, and the message says it was interrupted, not "stopped by the
 // callback" (issue 13 item 15). The signal is sent once the first progress line is on stderr, so
