@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "analysis/indentation_run.hpp"
+#include "analysis/mode_field.hpp"
 #include "app/interrupt_signals.hpp"
 #include "app/thread_count.hpp"
 #include "core/atomic_file.hpp"
@@ -52,20 +53,6 @@ void write_point_vtu(const std::filesystem::path& file, const IndentationSetup& 
   write_vtu(file.string(), s.model.mesh, state, fields);
 }
 
-// A stability event's mode as a nodal field: the translations of the mode (its shell part, chart
-// coordinates), scaled so that the largest is 1 (a shape; its sign is Lanczos').
-Eigen::MatrixXd mode_translations(const IndentationProblem& p, const cont::Vector& mode,
-                                  int nodes) {
-  Eigen::MatrixXd u = Eigen::MatrixXd::Zero(nodes, 3);
-  for (int n = 0; n < nodes; ++n)
-    for (int l = 0; l < 3; ++l) {
-      const int eq = p.dofs().equation(DofMap::dof(n, l));
-      if (eq >= 0 && eq < mode.size()) u(n, l) = mode[eq];
-    }
-  const double largest = u.cwiseAbs().maxCoeff();
-  return largest > 0 ? Eigen::MatrixXd(u / largest) : u;
-}
-
 // One VTU per stability change (stability_NN.vtu, at the event's point, with its critical mode
 // as the point field `critical_mode`); returns the files' names. The problem may have grown its
 // candidate set since the event: the appended multipliers are zero at the event.
@@ -81,7 +68,8 @@ std::vector<std::string> write_stability_vtus(const std::filesystem::path& dir, 
     char name[32];
     std::snprintf(name, sizeof name, "stability_%02d.vtu", static_cast<int>(names.size()) + 1);
     VtuFields extra;
-    extra.point_data["critical_mode"] = mode_translations(p, e.mode, s.model.mesh.num_nodes());
+    extra.point_data["critical_mode"] =
+        mode_translations(p.dofs(), e.mode, s.model.mesh.num_nodes());
     write_point_vtu(dir / name, s, p.evaluate(z, e.p), z, extra);
     names.push_back(name);
   }

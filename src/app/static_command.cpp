@@ -32,11 +32,22 @@ struct StaticRow {
   double energy = 0;      // N mm, strain energy
   double reaction = 0;    // N, sum of the support reactions along +z
   int iterations = 0;
+  // static.stability only (negative = -1 otherwise): negative eigenvalues, stable, lowest one.
+  int negative = -1;
+  bool stable = false;
+  double lowest_eigenvalue = 0;
 };
 
 StaticRow make_row(const StepResult& r, double factor) {
-  return StaticRow{r.load_factor,     -factor * r.applied_force.z(), -r.displacements[0].z(),
-                   factor * r.energy, factor * r.reaction_force.z(), r.iterations};
+  return StaticRow{r.load_factor,
+                   -factor * r.applied_force.z(),
+                   -r.displacements[0].z(),
+                   factor * r.energy,
+                   factor * r.reaction_force.z(),
+                   r.iterations,
+                   r.negative_eigenvalues,
+                   r.stable,
+                   r.lowest_eigenvalue};
 }
 
 std::string format_row(const StaticRow& r) {
@@ -46,26 +57,39 @@ std::string format_row(const StaticRow& r) {
   return line;
 }
 
-std::string csv_text(const std::vector<StaticRow>& rows) {
+// With static.stability two more columns: stable (0/1) and lowest_eigenvalue (N/mm).
+std::string csv_text(const std::vector<StaticRow>& rows, bool stability) {
   std::ostringstream os;
   os.precision(12);
-  os << "load_factor,force_N,apex_deflection_mm,strain_energy_Nmm,reaction_N,iterations\n";
-  for (const auto& r : rows)
+  os << "load_factor,force_N,apex_deflection_mm,strain_energy_Nmm,reaction_N,iterations"
+     << (stability ? ",stable,lowest_eigenvalue" : "") << "\n";
+  for (const auto& r : rows) {
     os << r.load_factor << ',' << r.force << ',' << r.deflection << ',' << r.energy << ','
-       << r.reaction << ',' << r.iterations << '\n';
+       << r.reaction << ',' << r.iterations;
+    if (stability) os << ',' << (r.stable ? 1 : 0) << ',' << r.lowest_eigenvalue;
+    os << '\n';
+  }
   return os.str();
 }
 
 nlohmann::json json_of(const StaticRow& r) {
-  return {{"load_factor", r.load_factor},       {"force_N", r.force},
-          {"apex_deflection_mm", r.deflection}, {"strain_energy_Nmm", r.energy},
-          {"reaction_N", r.reaction},           {"iterations", r.iterations}};
+  nlohmann::json j = {{"load_factor", r.load_factor},       {"force_N", r.force},
+                      {"apex_deflection_mm", r.deflection}, {"strain_energy_Nmm", r.energy},
+                      {"reaction_N", r.reaction},           {"iterations", r.iterations}};
+  if (r.negative >= 0) {
+    j["stable"] = r.stable;
+    j["negative_eigenvalues"] = r.negative;
+    j["lowest_eigenvalue"] = r.lowest_eigenvalue;
+  }
+  return j;
 }
 
 // A located event of the run (a limit point of the load factor), with the values there.
 struct StaticEventRow {
   cont::EventType type;
   StaticRow row;
+  cont::Criticality criticality = cont::Criticality::kNone;
+  int negative_before = -1, negative_after = -1;
 };
 
 nlohmann::json json_of(const CaseFile& c, const ShellModel& m, const DofMap& dofs,
@@ -78,6 +102,11 @@ nlohmann::json json_of(const CaseFile& c, const ShellModel& m, const DofMap& dof
     nlohmann::json j = json_of(e.row);
     j.erase("iterations");
     j["type"] = cont::event_type_name(e.type);
+    if (e.type == cont::EventType::kStabilityChange) {
+      j["criticality"] = cont::criticality_name(e.criticality);
+      j["negative_before"] = e.negative_before;
+      j["negative_after"] = e.negative_after;
+    }
     events.push_back(j);
   }
   return {{"case", c.file},
@@ -123,6 +152,25 @@ void write_results(const std::filesystem::path& dir, const ShellModel& m, const 
   for (std::size_t i = 0; i < written.size(); ++i)
     err << (i == 0 ? "" : i + 1 == written.size() ? " and " : ", ") << written[i];
   err << (written.empty() ? "nothing (output.formats)" : "") << "\n";
+}
+
+// One VTU per stability change (static_stability_NN.vtu: the state at the event, its resultants
+// and the critical mode as the point field `critical_mode`); returns the files' names.
+std::vector<std::string> write_stability_vtus(const std::filesystem::path& dir, const ShellModel& m,
+                                              const Assembler& assembler,
+                                              const std::vector<StaticEvent>& events) {
+  std::vector<std::string> names;
+  for (const StaticEvent& e : events) {
+    if (e.type != cont::EventType::kStabilityChange || e.states.empty()) continue;
+    char name[40];
+    std::snprintf(name, sizeof name, "static_stability_%02d.vtu",
+                  static_cast<int>(names.size()) + 1);
+    VtuFields fields = resultant_fields(m.mesh, assembler, *m.element, m.law, e.states);
+    fields.point_data["critical_mode"] = e.mode;
+    write_vtu((dir / name).string(), m.mesh, e.states, fields);
+    names.push_back(name);
+  }
+  return names;
 }
 
 std::string case_text(const std::string& path) {
@@ -171,6 +219,9 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   settings.steps = c.load->steps;
   settings.record_nodes = {m.apex_node()};
   const bool natural = settings.method == PathMethod::kNatural;
+  if (settings.stability && m.symmetry_factor > 1)
+    err << "note: static.stability on a symmetric part of the shell sees only the modes symmetric "
+           "about its planes (mesh.symmetry: full for all of them)\n";
   err << "static: " << m.mesh.num_nodes() << " nodes, " << m.mesh.num_elements() << " "
       << m.element->name() << " elements, " << dofs.num_free() << " free dofs, "
       << (natural ? std::to_string(settings.steps) + " load steps"
@@ -212,18 +263,32 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   const std::string& failure = result.failure;
   std::vector<StaticEventRow> events;
   for (const StaticEvent& e : result.events)
-    events.push_back({e.type, make_row(e.at, m.symmetry_factor)});
+    events.push_back({e.type, make_row(e.at, m.symmetry_factor), e.criticality, e.negative_before,
+                      e.negative_after});
 
   out << "Static run of " << c.file << " (whole-shell values; force and apex deflection along -z)\n"
       << "  lambda        force_N  deflection_mm  strain_energy_Nmm     reaction_N  iters\n";
   for (const auto& r : rows) out << format_row(r) << "\n";
   for (const auto& e : events)
-    out << "  " << cont::event_type_name(e.type) << " at load factor " << e.row.load_factor
-        << ": force " << e.row.force << " N, apex deflection " << e.row.deflection << " mm\n";
+    out << "  " << cont::event_type_name(e.type)
+        << (e.type == cont::EventType::kStabilityChange
+                ? " (" + cont::criticality_name(e.criticality) + ", " +
+                      std::to_string(e.negative_before) + " -> " +
+                      std::to_string(e.negative_after) + " negative eigenvalues)"
+                : std::string())
+        << " at load factor " << e.row.load_factor << ": force " << e.row.force
+        << " N, apex deflection " << e.row.deflection << " mm\n";
 
   const Assembler assembler(m.mesh, dofs, *m.element, m.law, m.kinematics, o.threads);
-  write_results(dir, m, c.output, assembler, rows.empty() ? nullptr : &last_state, csv_text(rows),
+  write_results(dir, m, c.output, assembler, rows.empty() ? nullptr : &last_state,
+                csv_text(rows, settings.stability),
                 json_of(c, m, dofs, rows, events, failure).dump(2) + "\n", err);
+  if (wants(c.output, OutputFormat::kVtu)) {
+    const std::vector<std::string> modes = write_stability_vtus(dir, m, assembler, result.events);
+    if (!modes.empty())
+      err << "wrote " << modes.size() << " stability VTU file(s) (critical_mode) in "
+          << dir.string() << "\n";
+  }
   if (failure.empty()) return 0;
   err << "shellindent: error: the run stopped after " << rows.size() << " converged step(s)"
       << (rows.empty() ? "" : " at load factor " + std::to_string(rows.back().load_factor)) << ": "

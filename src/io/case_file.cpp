@@ -393,8 +393,9 @@ StaticSettings read_static(const MapReader& top) {
   const auto map = section(top, "static");
   if (!map) return s;
   map->allow_only({"method", "step", "step_min", "step_max", "parameter_weight", "load_factor_max",
-                   "max_steps"});
+                   "max_steps", "stability"});
   s.method = map->choice_or("method", kMethods, s.method);
+  s.stability = map->choice_or("stability", kBooleans, s.stability);
   if (s.method == PathMethod::kNatural) {
     for (const char* key :
          {"step", "step_min", "step_max", "parameter_weight", "load_factor_max", "max_steps"})
