@@ -29,6 +29,7 @@
 #include "continuation/pseudo_arclength.hpp"
 #include "model/spherical_cap_mesh.hpp"
 #include "model/supports.hpp"
+#include "nonlinear_benchmark_support.hpp"
 #include "shell/shell_element.hpp"
 #include "shell/shell_law.hpp"
 
@@ -171,7 +172,10 @@ TEST(CapPressureBifurcation, Lambda4_AxisymmetricLimitPointFirst_Huang1964) {
 }
 
 // lambda = 8: above it, an asymmetric bifurcation (n >= 2) comes before the limit point.
+// Measured: bifurcation at p / p_cl = 0.77648, n = 4 (91 % of the ring's power), 18 points; a
+// long test (9 min wall on the shared machine at load 15; several minutes of CPU).
 TEST(CapPressureBifurcation, Lambda8_AsymmetricBifurcationFirst_Huang1964) {
+  if (!verification::long_tests_enabled()) GTEST_SKIP() << "set SHELLINDENT_LONG_TESTS=1 to run";
   const FirstCriticalPoint c = first_critical_point(8.0, 4.0);
   ASSERT_TRUE(c.found);
   EXPECT_EQ(c.criticality, cont::Criticality::kBifurcation);
