@@ -155,7 +155,25 @@ void LoadProblem::factorize_matrix() {
   }
 }
 
+SparseMatrix LoadProblem::chart_jacobian(const cont::Vector& x, double lambda,
+                                         std::vector<ShellChart::RotationBlock>& rotations) {
+  const Assembly& a = shell_.at(x, lambda);
+  // The chart's drilling term differentiates rotation rows that are components of a vector on
+  // the current axes: the internal moments. The loads' rotation rows are constant generalised
+  // forces (NodalMoment, loads.hpp) with zero derivative; including them (r = f_int - f_ext)
+  // was wrong by drill * M per loaded node, which stalled Newton on the rolled-up strip.
+  const cont::Vector r = dofs_.restrict_to_free(a.internal_force);
+  SparseMatrix J = a.tangent;
+  if (loads_.has_follower())
+    for_each_follower_stiffness(mesh_, loads_, shell_.states(), [&](int e, const auto& block) {
+      assembler_.add_element_block(e, block, -lambda, J);
+    });
+  rotations = chart_.to_chart_jacobian(x, r, J);
+  return J;
+}
+
 bool LoadProblem::factorize(const cont::Vector& x, double lambda) {
+  factored_x_.resize(0);
   try {
     if (!nonlinear()) {
       if (!factorized_) {
@@ -165,19 +183,10 @@ bool LoadProblem::factorize(const cont::Vector& x, double lambda) {
       }
       return true;
     }
-    const Assembly& a = shell_.at(x, lambda);
-    // The chart's drilling term differentiates rotation rows that are components of a vector on
-    // the current axes: the internal moments. The loads' rotation rows are constant generalised
-    // forces (NodalMoment, loads.hpp) with zero derivative; including them (r = f_int - f_ext)
-    // was wrong by drill * M per loaded node, which stalled Newton on the rolled-up strip.
-    const cont::Vector r = dofs_.restrict_to_free(a.internal_force);
-    jacobian_ = a.tangent;
-    if (loads_.has_follower())
-      for_each_follower_stiffness(mesh_, loads_, shell_.states(), [&](int e, const auto& block) {
-        assembler_.add_element_block(e, block, -lambda, jacobian_);
-      });
-    chart_.to_chart_jacobian(x, r, jacobian_);
+    jacobian_ = chart_jacobian(x, lambda, rotations_);
     factorize_matrix();
+    factored_x_ = x;
+    factored_lambda_ = lambda;
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     last_error_ = e.reason();

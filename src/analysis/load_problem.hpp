@@ -88,6 +88,19 @@ class LoadProblem : public cont::Problem {
   double inner(const cont::Vector& a, const cont::Vector& b) const override;
   // Nonlinear kinematics: re-bases the chart at x (see above); true if a node was re-based.
   bool adapt(cont::Vector& x, double lambda) override;
+  // Stability of a converged point (load_stability.cpp; docs/theory/continuation.md 12): the
+  // symmetric part of the chart Hessian of the potential, T' dF/dx (F = 0 there), its negative
+  // count and lowest eigenpairs (chart coordinates). Linear kinematics: K, always stable.
+  bool provides_stability() const override { return true; }
+  bool stability(const cont::Vector& x, double lambda, int modes, cont::Stability& out) override;
+  // What stability() analyses: H = (T' J + J' T) / 2 and the relative size of the skew part
+  // |T'J - J'T|_F / |T'J|_F dropped from it (0 for a conservative load at equilibrium).
+  struct StabilityMatrix {
+    SparseMatrix H;
+    double asymmetry = 0;
+  };
+  StabilityMatrix stability_matrix(const cont::Vector& x, double lambda);
+
   // "load_factor", then the displacement monitors in options order.
   std::vector<std::string> monitor_names() const override;
   cont::Vector monitors(const cont::Vector& x, double lambda) override;
@@ -128,6 +141,10 @@ class LoadProblem : public cont::Problem {
   Eigen::VectorXd external_force(double lambda) const;
   const Assembly& assembly_at(const cont::Vector& x, double lambda, bool tangent);
   void factorize_matrix();
+  // Nonlinear kinematics: dF/dx = (K - lambda K_p) T + D at (x, lambda), assembled; `rotations`
+  // receives the chart's 2x2 blocks T.
+  SparseMatrix chart_jacobian(const cont::Vector& x, double lambda,
+                              std::vector<ShellChart::RotationBlock>& rotations);
 
   const Mesh& mesh_;
   Loads loads_;
@@ -144,6 +161,10 @@ class LoadProblem : public cont::Problem {
   SparseMatrix jacobian_;
   std::unique_ptr<LinearSolver> solver_;
   bool factorized_ = false;  // linear kinematics: K is factored once
+  // Nonlinear: the point of the last factorize() and its chart blocks (stability() reuses them).
+  cont::Vector factored_x_;
+  double factored_lambda_ = 0;
+  std::vector<ShellChart::RotationBlock> rotations_;
   int rebasings_ = 0;
   std::string last_error_;
 };

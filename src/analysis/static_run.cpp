@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "analysis/load_problem.hpp"
+#include "analysis/mode_field.hpp"
 #include "continuation/natural.hpp"
 #include "continuation/pseudo_arclength.hpp"
 #include "core/decimal_number.hpp"
@@ -42,6 +43,10 @@ cont::Settings continuation_settings(const StaticSettings& s, double force_scale
   c.max_steps = s.max_steps;
   return c;
 }
+
+// Two modes: shells of revolution lose stability in pairs (cos and sin n theta), and each
+// eigenvalue of a pair is then located on itself.
+constexpr int kStabilityModes = 2;
 
 // The step result of a point: reactions r = f_int - f_ext at the prescribed dofs
 // (assembler.hpp), their sum and that of the applied forces, the recorded displacements.
@@ -104,7 +109,8 @@ StaticResult run_static(const Mesh& mesh, const DofMap& dofs, const ShellElement
   constexpr double kRoundoffMargin = 1000;
   const double scale = std::max(problem.force_scale(),
                                 kRoundoffMargin * problem.roundoff_force() / settings.tolerance);
-  const cont::Settings continuation = continuation_settings(settings, scale);
+  cont::Settings continuation = continuation_settings(settings, scale);
+  if (settings.stability) continuation.stability_modes = kStabilityModes;
 
   StaticResult out;
   out.state = reference_state(mesh);
@@ -121,8 +127,16 @@ StaticResult run_static(const Mesh& mesh, const DofMap& dofs, const ShellElement
       LoadPointState s = event_rebasings == problem.rebasings()
                              ? problem.point_state(e.x, e.p)
                              : problem.point_state_with_base(event_base, e.x, e.p);
-      out.events.push_back(
-          {e.type, step_result(problem, settings.record_nodes, std::move(s), e.p, 0, nullptr)});
+      StaticEvent event;
+      event.type = e.type;
+      event.criticality = e.criticality;
+      event.negative_before = e.negative_before;
+      event.negative_after = e.negative_after;
+      event.at = step_result(problem, settings.record_nodes, std::move(s), e.p, 0,
+                             e.type == cont::EventType::kStabilityChange ? &event.states : nullptr);
+      if (e.type == cont::EventType::kStabilityChange)
+        event.mode = mode_translations(problem.dofs(), e.mode, mesh.num_nodes());
+      out.events.push_back(std::move(event));
     }
     if (event_rebasings != problem.rebasings()) {
       event_base = problem.chart_base();
@@ -135,6 +149,9 @@ StaticResult run_static(const Mesh& mesh, const DofMap& dofs, const ShellElement
     out.steps.push_back(step_result(problem, settings.record_nodes,
                                     problem.point_state(point.x, point.p), point.p,
                                     point.newton_iterations, &out.state));
+    out.steps.back().negative_eigenvalues = point.negative_eigenvalues;
+    out.steps.back().stable = point.stable;
+    out.steps.back().lowest_eigenvalue = point.lowest_eigenvalue;
     return !callback || callback(out.steps.back(), out.state);
   };
   const cont::Branch branch =

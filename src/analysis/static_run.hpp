@@ -18,6 +18,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -38,11 +39,24 @@ struct StepResult {
   Vector3d reaction_force = Vector3d::Zero();  // sum of the translational reactions, N
   Vector3d applied_force = Vector3d::Zero();   // sum of the applied nodal forces, N
   LinearSolverKind linear_solver = LinearSolverKind::kCholmod;  // of the last factorization
+  // StaticSettings::stability only (else -1, false, NaN): the number of negative eigenvalues of
+  // the chart Hessian, no negative and no zero one, and the lowest eigenvalue (N/mm).
+  int negative_eigenvalues = -1;
+  bool stable = false;
+  double lowest_eigenvalue = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct StaticEvent {
   cont::EventType type = cont::EventType::kLimitPoint;
   StepResult at;  // iterations = 0
+  // Stability changes only (else kNone, -1, empty): the classification, the negative counts
+  // before and after, the node states at the event and the critical mode's translations per
+  // node (rows = nodes; unit largest entry, sign arbitrary).
+  cont::Criticality criticality = cont::Criticality::kNone;
+  int negative_before = -1;
+  int negative_after = -1;
+  std::vector<NodeState> states;
+  Eigen::MatrixXd mode;
 };
 
 struct StaticResult {

@@ -28,6 +28,9 @@ struct StaticSettings {
   LinearSolverKind linear_solver = LinearSolverKind::kCholmod;  // linear kinematics: cholmod |
                                                                 // umfpack; nonlinear: umfpack
   std::vector<int> record_nodes;  // nodes whose displacement each StepResult keeps
+  // The stability of every point (LoadProblem::stability; docs/theory/continuation.md 12) and
+  // its changes located as events, classified as limit point or bifurcation, with their mode.
+  bool stability = false;
 
   // Throws an input error naming the bad field (static.<field>).
   void validate() const;

@@ -45,7 +45,10 @@ constexpr const char* kStaticHelp =
     "stderr and a table (load factor, force N, "
     "apex deflection mm, strain energy N*mm, reaction N, iterations) to stdout, then writes "
     "static.csv, static.json and static.vtu (last step, nodal resultants N and M averaged over "
-    "elements) to the output directory. Exit 1 if a step fails (converged steps are written).\n"
+    "elements) to the output directory. With `static: {stability: true}` every step's stability "
+    "(stable, lowest_eigenvalue) and the located stability changes (limit point or "
+    "bifurcation, their mode in static_stability_NN.vtu). Exit 1 if a step fails (converged "
+    "steps are written).\n"
     "Example:\n"
     "  shellindent static studies/cap_apex_load.yaml --out results/cap_apex_load";
 

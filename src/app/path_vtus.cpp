@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "analysis/mode_field.hpp"
 #include "io/damage_fields.hpp"
 #include "io/result_fields.hpp"
 
@@ -15,20 +16,6 @@ std::string numbered(const char* pattern, int index) {
   char name[32];
   std::snprintf(name, sizeof name, pattern, index);
   return name;
-}
-
-// A stability event's mode as a nodal field: the translations of the mode (its shell part, chart
-// coordinates), scaled so that the largest is 1 (a shape; its sign is Lanczos').
-Eigen::MatrixXd mode_translations(const IndentationProblem& p, const cont::Vector& mode,
-                                  int nodes) {
-  Eigen::MatrixXd u = Eigen::MatrixXd::Zero(nodes, 3);
-  for (int n = 0; n < nodes; ++n)
-    for (int l = 0; l < 3; ++l) {
-      const int eq = p.dofs().equation(DofMap::dof(n, l));
-      if (eq >= 0 && eq < mode.size()) u(n, l) = mode[eq];
-    }
-  const double largest = u.cwiseAbs().maxCoeff();
-  return largest > 0 ? Eigen::MatrixXd(u / largest) : u;
 }
 
 // Per-candidate values as a nodal field: zero at the nodes that are not candidates.
@@ -102,7 +89,7 @@ int PathVtus::after_run(IndentationSetup& s, const PathResult& r) {
     z.head(e.x.size()) = e.x;
     const std::string name = numbered("event_%02d.vtu", ++events);
     if (e.type == cont::EventType::kStabilityChange) {
-      const Eigen::MatrixXd mode = mode_translations(p, e.mode, s.model.mesh.num_nodes());
+      const Eigen::MatrixXd mode = mode_translations(p.dofs(), e.mode, s.model.mesh.num_nodes());
       write(name, s, p.evaluate(z, e.p), z, &mode);
     } else {
       write(name, s, p.evaluate(z, e.p), z);

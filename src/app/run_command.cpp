@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "analysis/indentation_run.hpp"
+#include "analysis/mode_field.hpp"
 #include "app/interrupt_signals.hpp"
 #include "app/path_vtus.hpp"
 #include "core/atomic_file.hpp"

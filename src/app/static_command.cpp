@@ -34,6 +34,10 @@ struct StaticRow {
   double reaction = 0;    // N, sum of the support reactions along +z
   int iterations = 0;
   std::vector<Vector3d> recorded;  // mm, the mean displacement of each static.record set
+  // static.stability only (negative = -1 otherwise): negative eigenvalues, stable, lowest one.
+  int negative = -1;
+  bool stable = false;
+  double lowest_eigenvalue = 0;
 };
 
 // static.record: the recorded sets' names and, for each, the positions of its nodes in
@@ -50,7 +54,10 @@ StaticRow make_row(const StepResult& r, double factor, const RecordedSets& sets)
                 factor * r.energy,
                 factor * r.reaction_force.z(),
                 r.iterations,
-                {}};
+                {},
+                r.negative_eigenvalues,
+                r.stable,
+                r.lowest_eigenvalue};
   for (const std::vector<int>& positions : sets.positions) {
     Vector3d sum = Vector3d::Zero();
     for (int i : positions) sum += r.displacements[i];
@@ -94,17 +101,19 @@ std::string recorded_column(const std::string& name, int axis) {
   return name + "_u" + "xyz"[axis] + "_mm";
 }
 
-std::string csv_text(const std::vector<StaticRow>& rows, const RecordedSets& sets) {
+// With static.stability two more columns: stable (0/1) and lowest_eigenvalue (N/mm).
+std::string csv_text(const std::vector<StaticRow>& rows, const RecordedSets& sets, bool stability) {
   std::ostringstream os;
   os.precision(12);
   os << "load_factor,force_N,apex_deflection_mm,strain_energy_Nmm,reaction_N,iterations";
   for (const std::string& name : sets.names)
     for (int axis = 0; axis < 3; ++axis) os << ',' << recorded_column(name, axis);
-  os << '\n';
+  os << (stability ? ",stable,lowest_eigenvalue" : "") << '\n';
   for (const auto& r : rows) {
     os << r.load_factor << ',' << r.force << ',' << r.deflection << ',' << r.energy << ','
        << r.reaction << ',' << r.iterations;
     for (const Vector3d& u : r.recorded) os << ',' << u.x() << ',' << u.y() << ',' << u.z();
+    if (stability) os << ',' << (r.stable ? 1 : 0) << ',' << r.lowest_eigenvalue;
     os << '\n';
   }
   return os.str();
@@ -117,6 +126,11 @@ nlohmann::json json_of(const StaticRow& r, const RecordedSets& sets) {
   for (std::size_t i = 0; i < sets.names.size(); ++i)
     for (int axis = 0; axis < 3; ++axis)
       j[recorded_column(sets.names[i], axis)] = r.recorded[i][axis];
+  if (r.negative >= 0) {
+    j["stable"] = r.stable;
+    j["negative_eigenvalues"] = r.negative;
+    j["lowest_eigenvalue"] = r.lowest_eigenvalue;
+  }
   return j;
 }
 
@@ -124,6 +138,8 @@ nlohmann::json json_of(const StaticRow& r, const RecordedSets& sets) {
 struct StaticEventRow {
   cont::EventType type;
   StaticRow row;
+  cont::Criticality criticality = cont::Criticality::kNone;
+  int negative_before = -1, negative_after = -1;
 };
 
 nlohmann::json json_of(const CaseFile& c, const ShellModel& m, const DofMap& dofs,
@@ -137,6 +153,11 @@ nlohmann::json json_of(const CaseFile& c, const ShellModel& m, const DofMap& dof
     nlohmann::json j = json_of(e.row, sets);
     j.erase("iterations");
     j["type"] = cont::event_type_name(e.type);
+    if (e.type == cont::EventType::kStabilityChange) {
+      j["criticality"] = cont::criticality_name(e.criticality);
+      j["negative_before"] = e.negative_before;
+      j["negative_after"] = e.negative_after;
+    }
     events.push_back(j);
   }
   return {{"case", c.file},
@@ -183,6 +204,25 @@ void write_results(const std::filesystem::path& dir, const ShellModel& m, const 
   for (std::size_t i = 0; i < written.size(); ++i)
     err << (i == 0 ? "" : i + 1 == written.size() ? " and " : ", ") << written[i];
   err << (written.empty() ? "nothing (output.formats)" : "") << "\n";
+}
+
+// One VTU per stability change (static_stability_NN.vtu: the state at the event, its resultants
+// and the critical mode as the point field `critical_mode`); returns the files' names.
+std::vector<std::string> write_stability_vtus(const std::filesystem::path& dir, const ShellModel& m,
+                                              const Assembler& assembler,
+                                              const std::vector<StaticEvent>& events) {
+  std::vector<std::string> names;
+  for (const StaticEvent& e : events) {
+    if (e.type != cont::EventType::kStabilityChange || e.states.empty()) continue;
+    char name[40];
+    std::snprintf(name, sizeof name, "static_stability_%02d.vtu",
+                  static_cast<int>(names.size()) + 1);
+    VtuFields fields = resultant_fields(m.mesh, assembler, *m.element, m.law, e.states);
+    fields.point_data["critical_mode"] = e.mode;
+    write_vtu((dir / name).string(), m.mesh, e.states, fields);
+    names.push_back(name);
+  }
+  return names;
 }
 
 std::string case_text(const std::string& path) {
@@ -232,6 +272,9 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
 
   const DofMap dofs = make_dof_map(m.mesh, m.supports, m.displacements);
   const bool natural = settings.method == PathMethod::kNatural;
+  if (settings.stability && m.symmetry_factor > 1)
+    err << "note: static.stability on a symmetric part of the shell sees only the modes symmetric "
+           "about its planes (mesh.symmetry: full for all of them)\n";
   err << "static: " << m.mesh.num_nodes() << " nodes, " << m.mesh.num_elements() << " "
       << m.element->name() << " elements, " << dofs.num_free() << " free dofs, "
       << (natural ? std::to_string(settings.steps) + " load steps"
@@ -273,19 +316,32 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
   const std::string& failure = result.failure;
   std::vector<StaticEventRow> events;
   for (const StaticEvent& e : result.events)
-    events.push_back({e.type, make_row(e.at, m.symmetry_factor, sets)});
+    events.push_back({e.type, make_row(e.at, m.symmetry_factor, sets), e.criticality,
+                      e.negative_before, e.negative_after});
 
   out << "Static run of " << c.file << " (whole-shell values; force and apex deflection along -z)\n"
       << "  lambda        force_N  deflection_mm  strain_energy_Nmm     reaction_N  iters\n";
   for (const auto& r : rows) out << format_row(r) << "\n";
   for (const auto& e : events)
-    out << "  " << cont::event_type_name(e.type) << " at load factor " << e.row.load_factor
-        << ": force " << e.row.force << " N, apex deflection " << e.row.deflection << " mm\n";
+    out << "  " << cont::event_type_name(e.type)
+        << (e.type == cont::EventType::kStabilityChange
+                ? " (" + cont::criticality_name(e.criticality) + ", " +
+                      std::to_string(e.negative_before) + " -> " +
+                      std::to_string(e.negative_after) + " negative eigenvalues)"
+                : std::string())
+        << " at load factor " << e.row.load_factor << ": force " << e.row.force
+        << " N, apex deflection " << e.row.deflection << " mm\n";
 
   const Assembler assembler(m.mesh, dofs, *m.element, m.law, m.kinematics, o.threads);
   write_results(dir, m, c.output, assembler, rows.empty() ? nullptr : &last_state,
-                csv_text(rows, sets),
+                csv_text(rows, sets, settings.stability),
                 json_of(c, m, dofs, rows, events, sets, failure).dump(2) + "\n", err);
+  if (wants(c.output, OutputFormat::kVtu)) {
+    const std::vector<std::string> modes = write_stability_vtus(dir, m, assembler, result.events);
+    if (!modes.empty())
+      err << "wrote " << modes.size() << " stability VTU file(s) (critical_mode) in "
+          << dir.string() << "\n";
+  }
   if (failure.empty()) return 0;
   err << "shellindent: error: the run stopped after " << rows.size() << " converged step(s)"
       << (rows.empty() ? "" : " at load factor " + std::to_string(rows.back().load_factor)) << ": "

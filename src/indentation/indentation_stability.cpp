@@ -25,28 +25,6 @@
 namespace si {
 namespace {
 
-// The block-diagonal chart transform of the free dofs: identity on translations, the 2x2 blocks
-// T on each node's rotation coordinates.
-SparseMatrix chart_transform(int n, const std::vector<ShellChart::RotationBlock>& blocks) {
-  std::vector<bool> rotation(static_cast<std::size_t>(n), false);
-  Triplets t;
-  t.reserve(static_cast<std::size_t>(n) + 2 * blocks.size());
-  for (const ShellChart::RotationBlock& b : blocks) {
-    const int eq[2] = {b.eq_a, b.eq_b};
-    for (int r = 0; r < 2; ++r) {
-      if (eq[r] < 0) continue;
-      rotation[static_cast<std::size_t>(eq[r])] = true;
-      for (int c = 0; c < 2; ++c)
-        if (eq[c] >= 0) t.emplace_back(eq[r], eq[c], b.T(r, c));
-    }
-  }
-  for (int i = 0; i < n; ++i)
-    if (!rotation[static_cast<std::size_t>(i)]) t.emplace_back(i, i, 1.0);
-  SparseMatrix T(n, n);
-  T.setFromTriplets(t.begin(), t.end());
-  return T;
-}
-
 // Keeps the terms' caches (the gaps' Newton guesses) as they were before the analysis, which
 // evaluates the gaps again: the guesses steer the next solve's gap iterations at the level of
 // round-off, and the path must be the same with path.stability as without it.
@@ -81,7 +59,7 @@ IndentationProblem::StabilityMatrices IndentationProblem::stability_matrices(con
   SparseMatrix J;  // assembled here unless factorize() was at this very point
   SparseMatrix T;
   if (factored_ && factored_->h == h && factored_->z.size() == z.size() && factored_->z == z) {
-    T = chart_transform(nf, factored_->rotations);
+    T = ShellChart::transform(nf, factored_->rotations);
   } else {
     cont::Vector r_free;
     const std::vector<NodeState>& states = shell_terms(z, h, r_free);
@@ -92,7 +70,7 @@ IndentationProblem::StabilityMatrices IndentationProblem::stability_matrices(con
     for (int k = 0; k < K.nonZeros(); ++k) J.valuePtr()[k_to_j_[k]] = K.valuePtr()[k];
     const TermPoint p{z, h, states};
     for (const auto& t : parts_.terms) t->add_jacobian(p, J.valuePtr(), nullptr);
-    T = chart_transform(nf, shell_.to_chart(z.head(nf), r_free, J));
+    T = ShellChart::transform(nf, shell_.to_chart(z.head(nf), r_free, J));
   }
 
   StabilityMatrices m;

@@ -346,10 +346,11 @@ StaticSettings read_static(const MapReader& top) {
   const auto map = section(top, "static");
   if (!map) return s;
   map->allow_only({"method", "step", "step_min", "step_max", "parameter_weight", "load_factor_max",
-                   "max_steps", "tolerance", "record"});
+                   "max_steps", "tolerance", "record", "stability"});
   s.method = map->choice_or("method", kMethods, s.method);
   s.tolerance = map->positive_or("tolerance", Dimension::kDimensionless, s.tolerance);
   if (s.tolerance >= 1e-2) throw_input("must be below 1e-2", map->where("tolerance"));
+  s.stability = map->choice_or("stability", kBooleans, s.stability);
   if (s.method == PathMethod::kNatural) {
     for (const char* key :
          {"step", "step_min", "step_max", "parameter_weight", "load_factor_max", "max_steps"})

@@ -184,4 +184,24 @@ std::vector<ShellChart::RotationBlock> ShellChart::to_chart_jacobian(const Eigen
   return blocks;
 }
 
+SparseMatrix ShellChart::transform(int n, const std::vector<RotationBlock>& blocks) {
+  std::vector<bool> rotation(static_cast<std::size_t>(n), false);
+  std::vector<Eigen::Triplet<double, int>> t;
+  t.reserve(static_cast<std::size_t>(n) + 2 * blocks.size());
+  for (const RotationBlock& b : blocks) {
+    const int eq[2] = {b.eq_a, b.eq_b};
+    for (int r = 0; r < 2; ++r) {
+      if (eq[r] < 0) continue;
+      rotation[static_cast<std::size_t>(eq[r])] = true;
+      for (int c = 0; c < 2; ++c)
+        if (eq[c] >= 0) t.emplace_back(eq[r], eq[c], b.T(r, c));
+    }
+  }
+  for (int i = 0; i < n; ++i)
+    if (!rotation[static_cast<std::size_t>(i)]) t.emplace_back(i, i, 1.0);
+  SparseMatrix T(n, n);
+  T.setFromTriplets(t.begin(), t.end());
+  return T;
+}
+
 }  // namespace si

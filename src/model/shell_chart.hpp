@@ -78,6 +78,9 @@ class ShellChart {
   // Returns the blocks T it applied.
   std::vector<RotationBlock> to_chart_jacobian(const Eigen::VectorXd& x, const Eigen::VectorXd& r,
                                                SparseMatrix& K) const;
+  // The block-diagonal transform T of n free dofs from the blocks: identity on translations, the
+  // 2x2 blocks on each node's rotation coordinates (T' J is the chart Hessian at equilibrium).
+  static SparseMatrix transform(int n, const std::vector<RotationBlock>& blocks);
 
  private:
   struct NodeRotation {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_test_support.hpp"
 
@@ -172,19 +173,22 @@ TEST(StaticCommand, NonConvergedRunExitsOneAndWritesWhereItStopped) {
 // Reference (Table 9(a), ABAQUS S4R): the first local maximum P/Pmax = 0.7421 and the local
 // minimum 0.1729 of the tabulated path; acceptance as in the verification test
 // (test_sze_hinged_roof.cpp): within 1 % of Pmax = 3000 N. Measured: 0.7411 and 0.1735.
+std::string hinged_roof_case(const std::string& more_static = "") {
+  return "material: {type: isotropic, E: 3102.75 MPa, nu: 0.3}\n"
+         "laminate: {layup: \"[0]\", ply_thickness: 12.7 mm}\n"
+         "shell: {type: cylindrical_panel, radius: 2540 mm, length: 508 mm, angle: 11.459156 deg,\n"
+         "        edge: free}\n"
+         "mesh: {size_apex: 31.8 mm, symmetry: quarter}\n"
+         "supports: [{on: straight_edges, type: hinged}]\n"
+         "loads: [{type: point, on: apex, force: [0 N, 0 N, -3000 N]}]\n"
+         "static: {method: pseudo_arclength, step: 0.2 mm, step_max: 0.25 mm,\n"
+         "         parameter_weight: 10 mm, load_factor_max: 1.1" +
+         more_static + "}\n";
+}
+
 TEST(StaticCommand, SzeHingedRoofSnapsThroughBothLimitPoints_SzeLiuLo2004Sec38a) {
   const fs::path dir = fresh_dir("static_roof");
-  const fs::path path = write_case(
-      dir,
-      "material: {type: isotropic, E: 3102.75 MPa, nu: 0.3}\n"
-      "laminate: {layup: \"[0]\", ply_thickness: 12.7 mm}\n"
-      "shell: {type: cylindrical_panel, radius: 2540 mm, length: 508 mm, angle: 11.459156 deg,\n"
-      "        edge: free}\n"
-      "mesh: {size_apex: 31.8 mm, symmetry: quarter}\n"
-      "supports: [{on: straight_edges, type: hinged}]\n"
-      "loads: [{type: point, on: apex, force: [0 N, 0 N, -3000 N]}]\n"
-      "static: {method: pseudo_arclength, step: 0.2 mm, step_max: 0.25 mm,\n"
-      "         parameter_weight: 10 mm, load_factor_max: 1.1}\n");
+  const fs::path path = write_case(dir, hinged_roof_case());
   const auto r = run_cli("static '" + path.string() + "' --out '" + (dir / "out").string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(contains(r.output, "64 mitc4 elements")) << r.output;
@@ -207,6 +211,46 @@ TEST(StaticCommand, SzeHingedRoofSnapsThroughBothLimitPoints_SzeLiuLo2004Sec38a)
   for (const auto& s : steps) fell = fell || s.at("load_factor").get<double>() < 0.2;
   EXPECT_TRUE(fell);
   EXPECT_TRUE(contains(r.output, "limit_point at load factor 0.74")) << r.output;
+}
+
+// static.stability on the same roof: the two limit points of the load, located by dp/ds = 0, are
+// also the two changes of the negative count of the chart Hessian (0 -> 1, 1 -> 0), located on
+// the lowest eigenvalue and classified limit_point (two independent indicators of one point:
+// the same load factor to the location tolerance); no bifurcation on the quarter model (its
+// symmetric modes only, which the command notes). The steps are stable, then unstable between
+// the two, then stable again; a VTU with the critical mode per change.
+TEST(StaticCommand, StabilityOfTheHingedRoofMatchesItsLimitPoints) {
+  const fs::path dir = fresh_dir("static_roof_stability");
+  const fs::path path = write_case(dir, hinged_roof_case(", stability: true"));
+  const auto r = run_cli("static '" + path.string() + "' --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "sees only the modes symmetric")) << r.output;
+  const auto j = nlohmann::json::parse(read_text(dir / "out" / "static.json"));
+  std::vector<double> limits, changes;
+  for (const auto& e : j.at("events")) {
+    if (e.at("type") == "limit_point") limits.push_back(e.at("load_factor").get<double>());
+    if (e.at("type") != "stability_change") continue;
+    EXPECT_EQ(e.at("criticality"), "limit_point") << e.dump();
+    changes.push_back(e.at("load_factor").get<double>());
+  }
+  ASSERT_EQ(limits.size(), 2u) << j.at("events").dump(1);
+  ASSERT_EQ(changes.size(), 2u) << j.at("events").dump(1);
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(changes[i], limits[i], 1e-6) << "event " << i;
+  // stable <=> lowest eigenvalue > 0; stable, unstable, stable again: two switches.
+  const auto& steps = j.at("steps");
+  int switches = 0;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const bool stable = steps[i].at("stable").get<bool>();
+    EXPECT_EQ(stable, steps[i].at("lowest_eigenvalue").get<double>() > 0) << steps[i].dump();
+    if (i > 0 && stable != steps[i - 1].at("stable").get<bool>()) ++switches;
+  }
+  EXPECT_TRUE(steps.front().at("stable").get<bool>());
+  EXPECT_TRUE(steps.back().at("stable").get<bool>());
+  EXPECT_EQ(switches, 2);
+  EXPECT_TRUE(fs::exists(dir / "out" / "static_stability_01.vtu"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "static_stability_02.vtu"));
+  EXPECT_TRUE(contains(read_text(dir / "out" / "static_stability_01.vtu"), "critical_mode"));
+  EXPECT_TRUE(contains(read_text(dir / "out" / "static.csv"), ",stable,lowest_eigenvalue\n"));
 }
 
 TEST(StaticCommand, OutputDirectoryThatIsAFileIsRefusedBeforeTheRun) {
