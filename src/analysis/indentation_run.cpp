@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/critical_force.hpp"
+#include "analysis/critical_points.hpp"
 #include "analysis/local_contact.hpp"
 #include "analysis/path_columns.hpp"
 #include "contact/indenter_factory.hpp"
@@ -418,6 +419,16 @@ cont::NewtonSettings path_newton_settings(const IndentationSetup& s) {
   return n;
 }
 
+cont::Vector in_present_layout(const Eigen::VectorXd& old, const IndentationProblem& p) {
+  const int nf = p.num_shell_unknowns(), nl = p.num_local_unknowns();
+  const int nc_old = static_cast<int>(old.size()) - nf - nl;
+  cont::Vector z = cont::Vector::Zero(p.size());
+  if (nc_old < 0 || nf + nc_old + nl > p.size()) return {};
+  z.head(nf + nc_old) = old.head(nf + nc_old);
+  z.tail(nl) = old.tail(nl);
+  return z;
+}
+
 IndenterPose default_indenter_pose(const IndentationCase& c, const ShellModel& model) {
   IndenterPose pose;
   pose.direction = c.indenter.direction;
@@ -471,15 +482,22 @@ PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& cal
   // A power-law local contact is nonlinear even with linear kinematics: no fast path then.
   const bool fast =
       setup.model.kinematics == Kinematics::kLinear && setup.problem->num_local_unknowns() == 0;
-  PathResult r = fast ? run_linear(setup, callback)
+  // The onset of nonlinearity's bracket start is kept on the way (critical_points.hpp).
+  const std::shared_ptr<OnsetWatch> watch = control.critical_points ? watch_onset(setup) : nullptr;
+  const PathCallback watched = [&](const PathPoint& p, const cont::Vector& z) {
+    if (watch) watch_point(*watch, p, z);
+    return !callback || callback(p, z);
+  };
+  PathResult r = fast ? run_linear(setup, watched)
                  : setup.spec.contact.solver == ContactSolver::kActiveSet
-                     ? run_active_set(setup, callback)
-                     : run_continuation(setup, callback, control);
+                     ? run_active_set(setup, watched)
+                     : run_continuation(setup, watched, control);
   for (int k : {0, 2}) {
     const std::vector<cont::Event> found = critical_force_events(r.points, k);
     r.events.insert(r.events.end(), found.begin(), found.end());
   }
   add_damage_results(setup, r);
+  if (control.critical_points) r.critical = find_critical_points(setup, r, watch.get());
   return r;
 }
 

@@ -290,13 +290,30 @@ std::vector<double> read_depths(const MapReader& map, double depth_max) {
   return depths;
 }
 
+// A fraction in (0, 1), written as a plain number (0.05) or in per cent (5 %).
+double read_fraction(const std::string& text, const Where& where) {
+  const bool percent = !text.empty() && text.back() == '%';
+  double number = 0;
+  try {
+    number = parse_quantity(percent ? text.substr(0, text.size() - 1) : text,
+                            Dimension::kDimensionless) /
+             (percent ? 100.0 : 1.0);
+  } catch (const Error& e) {
+    throw e.within(where);
+  }
+  if (!(number > 0 && number < 1))
+    throw_input("expected a fraction in (0, 1), e.g. 0.05 or 5 %", where);
+  return number;
+}
+
 // A local contact law's approach and compliant rows are no constraint on the shell alone: the
 // restricted tangent (docs/theory/continuation.md 12) is defined without one.
 PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
   PathSpec path;
   const auto map = section(top, "path");
   if (!map) return path;
-  map->allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths", "stability"});
+  map->allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths", "stability",
+                   "nonlinearity_fraction"});
   path.method = map->choice_or("method", kMethods, path.method);
   path.depth_max = map->positive_or("depth_max", Dimension::kLength, path.depth_max);
   path.step = map->positive_or("step", Dimension::kLength, path.step);
@@ -326,6 +343,9 @@ PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
         "the stability of a point is defined without a local contact law (its approach is no "
         "constraint on the shell); set `contact.local: none` or `stability: false`",
         map->where("stability"));
+  if (map->has("nonlinearity_fraction"))
+    path.nonlinearity_fraction =
+        read_fraction(map->scalar("nonlinearity_fraction"), map->where("nonlinearity_fraction"));
   return path;
 }
 
