@@ -14,7 +14,7 @@ Writes OUT/cases/*.yaml, OUT/runs/<case>/ (each run's results), OUT/critical_poi
 prints the table; --report FILE writes the Markdown tables (docs/critical-points.md's are made
 so). The agreement: for each lay-up and point, the largest difference from the finest run (0.8 mm,
 step_max 0.2 mm) over the others, against the tolerance TOLERANCE (docs/critical-points.md says
-why). --quick: [0/90]2S on the 2 and 1.25 mm meshes, one step size, to 1.5 mm (what ctest runs):
+why). --quick: [0/90]2S on the 1.25 and 0.8 mm meshes, one step size, to 1.5 mm (what ctest runs):
 checks that every run completed, that the onset was found on each with its accuracy below
 0.01 mm, that the two meshes agree within TOLERANCE, and that no limit point or bifurcation is
 reported (the fundamental path of this cap is stable, PathStability.PaperCapFundamentalPath...).
@@ -31,8 +31,11 @@ LAYUPS = {"[0/90]2S": "quarter", "[45/-45]2S": "full"}
 MESHES = [2.0, 1.25, 0.8]  # mm, mesh.size_apex
 STEPS = [0.2, 0.1]  # mm, path.step_max
 DEPTH_MAX = 5.0  # mm
-# The agreement asked of the onset depth across meshes and steps, relative (see the report).
+# The agreement asked of the onset depth across meshes and steps, relative, on the meshes no
+# coarser than AGREEMENT_MESH (docs/critical-points.md says why: the 2 mm mesh puts the contact
+# zone at the onset, radius about 2.8 mm, on one element).
 TOLERANCE = 0.03
+AGREEMENT_MESH = 1.25
 
 
 def case_yaml(layup, size_apex, step_max, depth_max):
@@ -101,6 +104,7 @@ def run_case(exe, out, layup, size_apex, step_max, depth_max):
 def agreement(rows, key):
     """The largest relative difference of `key` from the finest run's, over the other runs of a
     lay-up; None if the finest has none."""
+    rows = [r for r in rows if r["size_apex_mm"] <= AGREEMENT_MESH]
     finest = min(rows, key=lambda r: (r["size_apex_mm"], r["step_max_mm"]))
     ref = finest.get(key)
     if ref is None:
@@ -124,8 +128,9 @@ def report(rows, layups):
             fmt(r.get("onset_accuracy_mm"), "%.1e"), fmt(r.get("onset_force_N"), "%.1f"),
             fmt(r.get("stiffness_min_depth_mm"), "%.3f"), r.get("limit_points", "-"),
             r.get("bifurcations", "-"), r["cpu_s"]))
-    lines += ["", "| lay-up | onset depth: largest difference from the finest run | "
-              "onset force: the same | tolerance |", "|---|---|---|---|"]
+    lines += ["", ("| lay-up | onset depth: largest difference from the finest run (meshes <= "
+                   "%g mm) | onset force: the same | tolerance |" % AGREEMENT_MESH),
+              "|---|---|---|---|"]
     for layup in layups:
         mine = [r for r in rows if r["layup"] == layup and "error" not in r]
         lines.append("| %s | %s | %s | %.0f %% |" % (
@@ -164,7 +169,7 @@ def main():
     args = ap.parse_args()
     layups, meshes, steps, depth_max = list(LAYUPS), MESHES, STEPS, DEPTH_MAX
     if args.quick:
-        layups, meshes, steps, depth_max = ["[0/90]2S"], MESHES[:2], STEPS[:1], 1.5
+        layups, meshes, steps, depth_max = ["[0/90]2S"], MESHES[1:], STEPS[:1], 1.5
     os.makedirs(os.path.join(args.out, "cases"), exist_ok=True)
     os.makedirs(os.path.join(args.out, "runs"), exist_ok=True)
     jobs = [(l, m, s) for l in layups for m in meshes for s in steps]
