@@ -419,16 +419,6 @@ cont::NewtonSettings path_newton_settings(const IndentationSetup& s) {
   return n;
 }
 
-cont::Vector in_present_layout(const Eigen::VectorXd& old, const IndentationProblem& p) {
-  const int nf = p.num_shell_unknowns(), nl = p.num_local_unknowns();
-  const int nc_old = static_cast<int>(old.size()) - nf - nl;
-  cont::Vector z = cont::Vector::Zero(p.size());
-  if (nc_old < 0 || nf + nc_old + nl > p.size()) return {};
-  z.head(nf + nc_old) = old.head(nf + nc_old);
-  z.tail(nl) = old.tail(nl);
-  return z;
-}
-
 IndenterPose default_indenter_pose(const IndentationCase& c, const ShellModel& model) {
   IndenterPose pose;
   pose.direction = c.indenter.direction;

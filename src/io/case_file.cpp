@@ -10,6 +10,7 @@
 
 #include "core/units.hpp"
 #include "io/damage_reader.hpp"
+#include "io/fraction_reader.hpp"
 #include "io/laminate_reader.hpp"
 #include "io/material_reader.hpp"
 #include "io/named_sets_reader.hpp"
@@ -290,22 +291,6 @@ std::vector<double> read_depths(const MapReader& map, double depth_max) {
   return depths;
 }
 
-// A fraction in (0, 1), written as a plain number (0.05) or in per cent (5 %).
-double read_fraction(const std::string& text, const Where& where) {
-  const bool percent = !text.empty() && text.back() == '%';
-  double number = 0;
-  try {
-    number = parse_quantity(percent ? text.substr(0, text.size() - 1) : text,
-                            Dimension::kDimensionless) /
-             (percent ? 100.0 : 1.0);
-  } catch (const Error& e) {
-    throw e.within(where);
-  }
-  if (!(number > 0 && number < 1))
-    throw_input("expected a fraction in (0, 1), e.g. 0.05 or 5 %", where);
-  return number;
-}
-
 // A local contact law's approach and compliant rows are no constraint on the shell alone: the
 // restricted tangent (docs/theory/continuation.md 12) is defined without one.
 PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
@@ -343,9 +328,7 @@ PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
         "the stability of a point is defined without a local contact law (its approach is no "
         "constraint on the shell); set `contact.local: none` or `stability: false`",
         map->where("stability"));
-  if (map->has("nonlinearity_fraction"))
-    path.nonlinearity_fraction =
-        read_fraction(map->scalar("nonlinearity_fraction"), map->where("nonlinearity_fraction"));
+  path.nonlinearity_fraction = fraction_or(*map, "nonlinearity_fraction", 0.05);
   return path;
 }
 
