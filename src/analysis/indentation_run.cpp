@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/critical_force.hpp"
+#include "analysis/critical_points.hpp"
 #include "analysis/local_contact.hpp"
 #include "analysis/path_columns.hpp"
 #include "contact/indenter_factory.hpp"
@@ -480,15 +481,19 @@ PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& cal
   // the indenter's rows only (not a support frame's): no fast path then.
   const bool fast = setup.model.kinematics == Kinematics::kLinear &&
                     setup.problem->num_local_unknowns() == 0 && !setup.problem->support_frame();
-  PathResult r = fast ? run_linear(setup, callback)
+  // The onset of nonlinearity's bracket start is kept on the way (critical_points.hpp).
+  const std::shared_ptr<OnsetWatch> watch = control.critical_points ? watch_onset(setup) : nullptr;
+  const PathCallback watched = watching(watch, callback);
+  PathResult r = fast ? run_linear(setup, watched)
                  : setup.spec.contact.solver == ContactSolver::kActiveSet
-                     ? run_active_set(setup, callback)
-                     : run_continuation(setup, callback, control);
+                     ? run_active_set(setup, watched)
+                     : run_continuation(setup, watched, control);
   for (int k : {0, 2}) {
     const std::vector<cont::Event> found = critical_force_events(r.points, k);
     r.events.insert(r.events.end(), found.begin(), found.end());
   }
   add_damage_results(setup, r);
+  if (control.critical_points) r.critical = find_critical_points(setup, r, watch.get());
   return r;
 }
 

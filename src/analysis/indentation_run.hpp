@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/critical_point.hpp"
 #include "analysis/damage_probe.hpp"
 #include "analysis/damage_results.hpp"
 #include "analysis/indentation_case.hpp"
@@ -99,6 +100,8 @@ struct PathResult {
   cont::Vector final_unknowns;
   // path.stability: every point has its stability, and the results carry its columns.
   bool stability = false;
+  // The named critical points (critical_points.hpp; PathControl::critical_points).
+  CriticalPoints critical;
 };
 
 // Called after each accepted point with the point and the problem's unknowns; returning false
@@ -122,11 +125,20 @@ struct PathControl {
   // checkpoint, and handed back on resume before the run goes on (it may throw to refuse).
   std::function<nlohmann::json()> save_record;
   std::function<void(const nlohmann::json&)> restore_record;
+  // Find the named critical points after the run (PathResult::critical; for the onset of
+  // nonlinearity a linear-kinematics twin of the case, solved by the fast path at each point's
+  // depth). A calibration's force-travel runs read only the force and skip them.
+  bool critical_points = true;
 };
 
 // The Newton settings of a continuation run's corrector, for solves at a fixed depth outside a
 // path (io/force_travel.hpp's warm starts).
 cont::NewtonSettings path_newton_settings(const IndentationSetup& setup);
+
+// An earlier state in the problem's present layout: shell unknowns, the multipliers of the
+// candidates it knew (the set only grows, so they come first), zeros for the candidates added
+// since, the local approach last; empty if it cannot be one of this problem's.
+cont::Vector in_present_layout(const Eigen::VectorXd& old, const IndentationProblem& problem);
 
 // Runs the path. Numerical failures do not throw: they end the path with the reason.
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback = {},

@@ -18,6 +18,9 @@ struct PathSpec {
   // The stability of every point (docs/theory/continuation.md 12) and its changes as events;
   // off by default: the run is then exactly the one without it.
   bool stability = false;
+  // The onset of geometric nonlinearity is the first depth where the force departs from the
+  // linear-kinematics force by this fraction of it (analysis/critical_points.hpp), in (0, 1).
+  double nonlinearity_fraction = 0.05;
 };
 
 // The depth grid of a path: `depths`, or step, 2 step, ..., depth_max.

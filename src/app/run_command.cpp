@@ -20,6 +20,7 @@
 #include "io/case_digest.hpp"
 #include "io/case_file.hpp"
 #include "io/case_key_location.hpp"
+#include "io/critical_points_json.hpp"
 #include "io/damage_fields.hpp"
 #include "io/default_case.hpp"
 #include "io/output_directory.hpp"
@@ -286,6 +287,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
                   : "")
           << " at depth " << e.p << " mm\n";
   print_damage_summary(r, out);
+  for (const std::string& line : critical_points_summary(r.critical)) out << line << "\n";
 
   std::vector<std::string> written = write_path_files(dir, formats, setup, r, vtus, damage_rows);
   if (event_files > 0)

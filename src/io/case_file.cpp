@@ -11,6 +11,7 @@
 #include "core/units.hpp"
 #include "io/damage_reader.hpp"
 #include "io/fixture_reader.hpp"
+#include "io/fraction_reader.hpp"
 #include "io/laminate_reader.hpp"
 #include "io/material_reader.hpp"
 #include "io/named_sets_reader.hpp"
@@ -275,7 +276,8 @@ PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
   PathSpec path;
   const auto map = section(top, "path");
   if (!map) return path;
-  map->allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths", "stability"});
+  map->allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths", "stability",
+                   "nonlinearity_fraction"});
   path.method = map->choice_or("method", kMethods, path.method);
   path.depth_max = map->positive_or("depth_max", Dimension::kLength, path.depth_max);
   path.step = map->positive_or("step", Dimension::kLength, path.step);
@@ -305,6 +307,7 @@ PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
         "the stability of a point is defined without a local contact law (its approach is no "
         "constraint on the shell); set `contact.local: none` or `stability: false`",
         map->where("stability"));
+  path.nonlinearity_fraction = fraction_or(*map, "nonlinearity_fraction", 0.05);
   return path;
 }
 

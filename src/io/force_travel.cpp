@@ -26,19 +26,6 @@ bool at_travel(double depth, double t) {
   return std::abs(depth - t) <= 1e-9 * (1 + t);
 }
 
-// An earlier state in the problem's present layout: shell unknowns, the multipliers of the
-// candidates it knew (the set only grows, so they come first), zeros for the candidates added
-// since, the local approach last.
-cont::Vector padded(const Eigen::VectorXd& old, const IndentationProblem& p) {
-  const int nf = p.num_shell_unknowns(), nl = p.num_local_unknowns();
-  const int nc_old = static_cast<int>(old.size()) - nf - nl;
-  cont::Vector z = cont::Vector::Zero(p.size());
-  if (nc_old < 0 || nf + nc_old + nl > p.size()) return {};
-  z.head(nf + nc_old) = old.head(nf + nc_old);
-  z.tail(nl) = old.tail(nl);
-  return z;
-}
-
 // Each travel solved from the earlier run's state there. False if one does not converge.
 bool warm_run(IndentationSetup& setup, const std::vector<double>& travels,
               const ForceTravelStates& warm, const std::function<bool()>& keep_going,
@@ -51,7 +38,7 @@ bool warm_run(IndentationSetup& setup, const std::vector<double>& travels,
   const cont::NewtonSettings newton = path_newton_settings(setup);
   std::vector<Eigen::VectorXd> states;
   for (std::size_t k = 0; k < travels.size(); ++k) {
-    cont::Vector z = padded(warm.states[k], p);
+    cont::Vector z = in_present_layout(warm.states[k], p);
     if (z.size() == 0) return false;
     // As the path does: when contact spreads past the candidates, grow them and solve again.
     for (int round = 0;; ++round) {
@@ -81,7 +68,9 @@ void cold_run(IndentationSetup& setup, const std::vector<double>& travels,
     out.newton_iterations += pt.iterations;
     return !keep_going || keep_going();
   };
-  const PathResult r = run_indentation_path(setup, record);
+  PathControl control;
+  control.critical_points = false;  // only the force at the travels is read
+  const PathResult r = run_indentation_path(setup, record, control);
   out.ok =
       std::all_of(out.force.begin(), out.force.end(), [](double f) { return std::isfinite(f); });
   if (!out.ok) {

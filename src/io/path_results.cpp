@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "analysis/path_columns.hpp"
+#include "io/critical_points_json.hpp"
 #include "io/damage_json.hpp"
 #include "io/spellings.hpp"
 
@@ -228,7 +229,8 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
       {"completed", result.completed},
       {"reason", result.reason},
       {"points", points},
-      {"events", events_json(result)}};
+      {"events", events_json(result)},
+      {"critical_points", critical_points_json(result.critical)}};
   if (setup.spec.damage) j["damage"] = damage_json(setup, result);
   return j;
 }

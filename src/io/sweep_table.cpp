@@ -10,6 +10,7 @@
 #include "analysis/path_columns.hpp"
 #include "fitting/builtin_models.hpp"
 #include "fitting/curve_model.hpp"
+#include "io/critical_points_json.hpp"
 #include "io/csv_table.hpp"
 #include "io/damage_summary.hpp"
 #include "io/path_results.hpp"
@@ -193,6 +194,7 @@ json summarize_case(const StudyCase& c, const fs::path& dir, const StudyFile& st
     row[std::string("critical_") + k + "_depth_mm"] = at_depth;
     row[std::string("critical_") + k + "_force_N"] = at_force;
   }
+  summarize_critical_points(*path, row);
   summarize_damage(*path, row);
   if (study.has_fit) {
     const json grid = grid_points(dir);
@@ -210,6 +212,7 @@ std::vector<std::string> sweep_columns(const StudyFile& study,
         "depth_at_max_force_mm", "energy_end_Nmm", "critical_k11_depth_mm", "critical_k11_force_N",
         "critical_k22_depth_mm", "critical_k22_force_N"})
     cols.push_back(c);
+  for (const std::string& c : critical_point_columns()) cols.push_back(c);
   for (const std::string& c : damage_columns(cases)) cols.push_back(c);
   if (study.has_fit)
     for (const char* c : {"fit_status", "C1", "C1_lo", "C1_hi", "C2", "C2_lo", "C2_hi", "R2"})
