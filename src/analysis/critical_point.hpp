@@ -38,6 +38,7 @@ enum class OnsetStatus {
   kLinearKinematics,  // the run is the linear response itself
   kLocalLaw,          // contact.local: no linear fast path to compare with
   kTooFewPoints,
+  kSupportFrame,  // a fixture's frame: the linear fast path knows the indenter's rows only
 };
 
 struct CriticalPoints {

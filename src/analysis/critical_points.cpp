@@ -297,9 +297,10 @@ int position_of(const std::vector<std::string>& names, const std::string& name) 
   return it == names.end() ? -1 : static_cast<int>(it - names.begin());
 }
 
+// The linear twin is solved by the linear fast path, which knows the indenter's rows only.
 bool has_onset(const IndentationSetup& setup) {
   return setup.model.kinematics != Kinematics::kLinear &&
-         setup.problem->local_law().kind == LocalLawKind::kNone;
+         setup.problem->local_law().kind == LocalLawKind::kNone && !setup.problem->support_frame();
 }
 
 }  // namespace
@@ -321,6 +322,8 @@ CriticalPoints find_critical_points(IndentationSetup& setup, const PathResult& r
   const int force = position_of(r.monitor_names, column_name(PathColumn::kForce));
   if (setup.model.kinematics == Kinematics::kLinear) {
     out.onset_status = OnsetStatus::kLinearKinematics;
+  } else if (setup.problem->support_frame()) {
+    out.onset_status = OnsetStatus::kSupportFrame;
   } else if (!has_onset(setup)) {
     out.onset_status = OnsetStatus::kLocalLaw;
   } else {

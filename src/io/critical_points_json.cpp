@@ -63,7 +63,8 @@ const char* critical_kind_name(CriticalKind kind) {
 
 const char* onset_status_name(OnsetStatus status) {
   // In OnsetStatus's order.
-  const char* const names[] = {"found", "none", "linear_kinematics", "local_law", "too_few_points"};
+  const char* const names[] = {"found",     "none",           "linear_kinematics",
+                               "local_law", "too_few_points", "support_frame"};
   return names[static_cast<int>(status)];
 }
 
@@ -98,6 +99,9 @@ std::vector<std::string> critical_points_summary(const CriticalPoints& p) {
       break;
     case OnsetStatus::kTooFewPoints:
       onset += "not computed: too few points";
+      break;
+    case OnsetStatus::kSupportFrame:
+      onset += "not computed with a support frame (fixture)";
       break;
   }
   return {onset, "critical point: inflections of T(h): " + list_text(p.inflections),
