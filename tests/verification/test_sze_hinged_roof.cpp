@@ -31,6 +31,7 @@
 #include "shell/shell_element.hpp"
 #include "shell/shell_law.hpp"
 #include "sze_roof_support.hpp"
+#include "sze_roof_tables.hpp"
 
 namespace si {
 namespace {
@@ -40,34 +41,9 @@ using verification::make_sze_roof;
 using verification::sze_roof_settings;
 constexpr double kPmax = kRoofPmax;
 
-// One tabulated point: P/Pmax and the downward centre deflection -W_C (mm).
-struct PathPoint {
-  double load_factor;
-  double deflection;
-};
-
-// Table 9(a), h = 12.7 (csv/sze2004_3-8a_hinged_roof_isotropic_h12.7.csv).
-const std::vector<PathPoint> kSze38a = {
-    {0.0000, 0.000},  {0.0877, 0.693},  {0.1980, 1.638},  {0.3473, 3.087},  {0.4686, 4.477},
-    {0.5647, 5.802},  {0.6381, 7.057},  {0.6908, 8.237},  {0.7246, 9.339},  {0.7412, 10.358},
-    {0.7421, 11.293}, {0.7286, 12.141}, {0.7023, 12.903}, {0.6649, 13.583}, {0.6182, 14.188},
-    {0.5643, 14.728}, {0.5055, 15.217}, {0.4442, 15.676}, {0.3830, 16.125}, {0.3245, 16.590},
-    {0.2717, 17.094}, {0.2272, 17.657}, {0.1940, 18.299}, {0.1750, 19.028}, {0.1729, 19.852},
-    {0.1905, 20.771}, {0.2303, 21.780}, {0.2950, 22.875}, {0.3871, 24.049}, {0.4443, 24.663},
-    {0.5093, 25.293}, {0.5826, 25.940}, {0.6644, 26.601}, {0.7551, 27.276}, {0.8549, 27.964},
-    {0.9643, 28.663}, {1.0835, 29.374}};
-
-// Table 9(d), h = 6.35 (csv/sze2004_3-8d_hinged_roof_isotropic_h6.35.csv): -W_C turns back
-// between 17.008 and 14.451 (snap-back).
-const std::vector<PathPoint> kSze38d = {
-    {0.0000, 0.000},   {0.0517, 1.846},   {0.1182, 5.271},   {0.1583, 8.257},   {0.1837, 10.799},
-    {0.1914, 11.904},  {0.1953, 12.892},  {0.1950, 13.752},  {0.1901, 14.472},  {0.1806, 15.050},
-    {0.1671, 15.501},  {0.1323, 16.145},  {0.0923, 16.602},  {0.0504, 16.915},  {0.0083, 17.008},
-    {-0.0312, 16.697}, {-0.0622, 15.780}, {-0.0739, 15.206}, {-0.0861, 14.767}, {-0.1001, 14.520},
-    {-0.1142, 14.451}, {-0.1247, 14.862}, {-0.1288, 15.778}, {-0.1271, 16.961}, {-0.1196, 18.320},
-    {-0.1055, 19.817}, {-0.0825, 21.420}, {-0.0484, 23.100}, {-0.0006, 24.824}, {0.0626, 26.565},
-    {0.1427, 28.302},  {0.2403, 30.023},  {0.3559, 31.720},  {0.4898, 33.388},  {0.6417, 35.024},
-    {0.8114, 36.626},  {1.0313, 38.450}};
+using PathPoint = verification::RoofTablePoint;
+const std::vector<PathPoint>& kSze38a = verification::kSze38aTable;
+const std::vector<PathPoint>& kSze38d = verification::kSze38dTable;
 
 // The first local maximum of P/Pmax along a tabulated path (the snap-through load).
 double first_limit_load(const std::vector<PathPoint>& path) {
