@@ -45,6 +45,9 @@ constexpr UnitDef kUnits[] = {
     {"kN", Dimension::kForce, 1e3},
     {"mN", Dimension::kForce, 1e-3},
     {"lbf", Dimension::kForce, 4.4482216152605},
+    // A moment per length (an edge moment) is a force: N mm/mm = N.
+    {"N*mm/mm", Dimension::kForce, 1.0},
+    {"N*m/m", Dimension::kForce, 1.0},
     {"J", Dimension::kEnergy, 1e3},
     {"mJ", Dimension::kEnergy, 1.0},
     {"N*mm", Dimension::kEnergy, 1.0},

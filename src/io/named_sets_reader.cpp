@@ -14,6 +14,7 @@ const Choices<SupportType> kSupportTypes{{"clamped", SupportType::kClamped},
                                          {"free", SupportType::kFree}};
 const Choices<int> kAxes{{"x", 0}, {"y", 1}, {"z", 2}};
 const Choices<NamedLoadType> kLoadTypes{{"point", NamedLoadType::kPoint},
+                                        {"moment", NamedLoadType::kMoment},
                                         {"edge", NamedLoadType::kEdge},
                                         {"pressure", NamedLoadType::kPressure}};
 const Choices<bool> kBooleans{{"false", false}, {"true", true}};
@@ -87,6 +88,15 @@ NamedSupportSpec read_support(const MapReader& entry) {
   return s;
 }
 
+// A point force or moment is placed by a named set or by a position, never both.
+void require_one_of_on_at(const MapReader& entry, const std::string& what) {
+  if (entry.has("on") == entry.has("at"))
+    throw_input(what +
+                    " needs exactly one of `on` (a named set) and `at` (a position: the "
+                    "nearest node is loaded)",
+                entry.where());
+}
+
 NamedLoadSpec read_load(const MapReader& entry) {
   NamedLoadSpec l;
   l.type = entry.choice("type", kLoadTypes);
@@ -94,18 +104,28 @@ NamedLoadSpec read_load(const MapReader& entry) {
   switch (l.type) {
     case NamedLoadType::kPoint:
       entry.allow_only({"type", "on", "at", "force"});
-      if (entry.has("on") == entry.has("at"))
-        throw_input(
-            "a point load needs exactly one of `on` (a named set) and `at` (a position: "
-            "the nearest node is loaded)",
-            entry.where());
+      require_one_of_on_at(entry, "a point load");
       if (entry.has("at")) l.at = read_vector(entry, "at", Dimension::kLength);
       l.vector = read_vector(entry, "force", Dimension::kForce);
       break;
+    case NamedLoadType::kMoment:
+      // A moment has the unit of an energy (N mm, N m); the messages say "moment".
+      entry.allow_only({"type", "on", "at", "moment"});
+      require_one_of_on_at(entry, "a moment");
+      if (entry.has("at")) l.at = read_vector(entry, "at", Dimension::kLength);
+      l.vector = read_vector(entry, "moment", Dimension::kEnergy, "moment");
+      break;
     case NamedLoadType::kEdge:
-      entry.allow_only({"type", "on", "force_per_length"});
-      l.vector =
-          read_vector(entry, "force_per_length", Dimension::kFractureToughness, "force per length");
+      entry.allow_only({"type", "on", "force_per_length", "moment_per_length"});
+      if (!entry.has("force_per_length") && !entry.has("moment_per_length"))
+        throw_input("an edge load needs `force_per_length`, `moment_per_length` or both",
+                    entry.where());
+      if (entry.has("force_per_length"))
+        l.vector = read_vector(entry, "force_per_length", Dimension::kFractureToughness,
+                               "force per length");
+      // N mm/mm is a force: the messages say "moment per length".
+      if (entry.has("moment_per_length"))
+        l.moment = read_vector(entry, "moment_per_length", Dimension::kForce, "moment per length");
       break;
     case NamedLoadType::kPressure:
       entry.allow_only({"type", "on", "pressure", "follower"});

@@ -1,6 +1,8 @@
 #include "model/named_loads.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <set>
 #include <utility>
 
@@ -28,6 +30,18 @@ int nearest_node(const Mesh& mesh, const Vector3d& at) {
   return best;
 }
 
+// loads.hpp NodalMoment: a moment acts on the two rotation dofs only; a drilling component (along
+// the node's director) would be dropped silently, so it is refused here, naming the entry.
+void check_no_drilling(const Mesh& mesh, const Vector3d& moment, int node, const Where& where) {
+  if (std::abs(moment.dot(mesh.directors[node])) > 1e-12 * moment.norm())
+    throw_input("the moment has a component along the shell normal at node " +
+                    std::to_string(node) +
+                    " (a drilling moment, which the shell has no rotation to take); give only "
+                    "components in the shell's tangent plane",
+                where);
+}
+
+// A point force or a nodal moment: the same sets, `at` and symmetry shares.
 void add_point(Mesh& mesh, const NamedLoadSpec& spec, std::size_t index,
                const std::vector<const std::vector<int>*>& planes, Loads& loads) {
   std::string name = spec.on;
@@ -35,17 +49,40 @@ void add_point(Mesh& mesh, const NamedLoadSpec& spec, std::size_t index,
     name = "loads[" + std::to_string(index) + "]";
     set_node_set(mesh, name, {nearest_node(mesh, *spec.at)});
   }
-  for (int node : node_set(mesh, NamedLoadSpec{spec.type, name, {}, {}, 0, false, spec.where})) {
+  NamedLoadSpec named = spec;
+  named.on = name;
+  for (int node : node_set(mesh, named)) {
     double share = 1;
     for (const auto* plane : planes)
       if (in_set(*plane, node)) share /= 2;
     const std::string single = name + "#" + std::to_string(node);
     set_node_set(mesh, single, {node});
-    loads.points.push_back({single, spec.vector * share, true});
+    if (spec.type == NamedLoadType::kMoment) {
+      check_no_drilling(mesh, spec.vector, node, spec.where);
+      loads.moments.push_back({single, spec.vector * share, true});
+    } else
+      loads.points.push_back({single, spec.vector * share, true});
   }
 }
 
-void add_edge(const Mesh& mesh, const NamedLoadSpec& spec,
+// The consistent nodal moments of a constant moment per length on the element sides: half of
+// m L to each end of a side of reference length L.
+void add_edge_moments(Mesh& mesh, const NamedLoadSpec& spec,
+                      const std::set<std::pair<int, int>>& sides, Loads& loads) {
+  std::map<int, Vector3d> at_node;
+  for (const auto& [a, b] : sides) {
+    const Vector3d half = 0.5 * (mesh.nodes[b] - mesh.nodes[a]).norm() * spec.moment;
+    for (int n : {a, b}) at_node.try_emplace(n, Vector3d::Zero()).first->second += half;
+  }
+  for (const auto& [node, moment] : at_node) {
+    check_no_drilling(mesh, moment, node, spec.where);
+    const std::string single = spec.on + "#" + std::to_string(node);
+    set_node_set(mesh, single, {node});
+    loads.moments.push_back({single, moment, true});
+  }
+}
+
+void add_edge(Mesh& mesh, const NamedLoadSpec& spec,
               const std::vector<const std::vector<int>*>& planes, Loads& loads) {
   const std::vector<int>& nodes = node_set(mesh, spec);
   std::set<std::pair<int, int>> sides;
@@ -65,8 +102,9 @@ void add_edge(const Mesh& mesh, const NamedLoadSpec& spec,
             "an edge load on a symmetry plane of a quarter model is not supported (its "
             "share of the load is ambiguous); model the full shell",
             spec.where);
-    loads.lines.push_back({{a, b}, spec.vector});
+    if (!spec.vector.isZero()) loads.lines.push_back({{a, b}, spec.vector});
   }
+  if (!spec.moment.isZero()) add_edge_moments(mesh, spec, sides, loads);
 }
 
 std::vector<int> pressure_elements(const Mesh& mesh, const NamedLoadSpec& spec) {
@@ -97,6 +135,7 @@ void add_named_loads(Mesh& mesh, const std::vector<NamedLoadSpec>& specs,
     const NamedLoadSpec& spec = specs[i];
     switch (spec.type) {
       case NamedLoadType::kPoint:
+      case NamedLoadType::kMoment:
         add_point(mesh, spec, i, planes, loads);
         break;
       case NamedLoadType::kEdge:

@@ -82,6 +82,36 @@ TEST(NamedSets, CantileverStripUnderEdgeLoad_BeamTheory) {
   EXPECT_NEAR(run.steps.back().reaction_force.z(), P, 1e-9 * P);
 }
 
+// Tip deflection of a cantilever bent by an end moment M: M L^2 / (2 E I), no shear term (pure
+// bending; nu = 0 makes the plate strip a beam). The moment about -y lifts the free end. Once as
+// a moment per length along the free end (consistent nodal moments), once as a moment at each of
+// its nodes with the same total: a node-by-node split that is not the consistent one (every node
+// the same share) changes only the end's local twist, so the mean deflection agrees to 1 %.
+TEST(NamedSets, CantileverStripUnderEndMoment_BeamTheory) {
+  const double L = 100, b = 10, E = 70000, m = 0.01;  // m in N mm/mm along the free end
+  const std::string strip =
+      "shell: {type: rectangular_plate, length_x: 100 mm, length_y: 10 mm, edge: free}\n"
+      "mesh: {size_apex: 2 mm}\n"
+      "supports: [{on: x-, type: clamped}]\n"
+      "load: {steps: 1}\n";
+  const testing::StaticRun edge = testing::run_static_case(isotropic(
+      0.0, strip + "loads: [{type: edge, on: x+, moment_per_length: [0 N*mm/mm, -0.01 N*mm/mm, "
+                   "0 N*mm/mm]}]\n"));
+  const double M = m * b, I = b / 12.0;
+  const double expected = -M * L * L / (2 * E * I);  // testing::deflection is -u_z
+  const std::vector<int>& tip = edge.model.mesh.node_sets.at("x+");
+  for (int n : tip) EXPECT_NEAR(testing::deflection(edge, n), expected, 3e-3 * std::abs(expected));
+  EXPECT_NEAR(edge.steps.back().reaction_force.norm(), 0, 1e-12);
+
+  const std::string per_node = std::to_string(-M / tip.size());
+  const testing::StaticRun nodal = testing::run_static_case(
+      isotropic(0.0, strip + "loads: [{type: moment, on: x+, moment: [0 N*mm, " + per_node +
+                         " N*mm, 0 N*mm]}]\n"));
+  double mean = 0;
+  for (int n : tip) mean += testing::deflection(nodal, n) / tip.size();
+  EXPECT_NEAR(mean, expected, 1e-2 * std::abs(expected));
+}
+
 // Mid-span deflection of a clamped-clamped beam under a uniform load w: w L^4 / (384 E I) +
 // w L^2 / (8 k G A), w = p b.
 TEST(NamedSets, StripClampedOnTwoEdgesFreeOnTwo_BeamTheory) {
@@ -227,6 +257,21 @@ TEST(NamedSets, RefusesBadEntriesNamingKeyLineAndValue) {
                         "loads:\n  - {type: edge, on: apex, force_per_length: [0 N/mm, 0 "
                         "N/mm, 1 N/mm]}\n",
                     {"loads[0].on = 'apex'", "no element side"});
+  expect_case_error(plate + "loads:\n  - {type: edge, on: x+}\n",
+                    {"named.yaml:5:", "loads[0]", "force_per_length", "moment_per_length"});
+  expect_case_error(plate + "loads:\n  - {type: moment, on: x+, moment: [0 N, 1 N, 0 N]}\n",
+                    {"loads[0].moment", "moment", "N*mm"});
+  expect_case_error(
+      plate + "loads:\n  - {type: moment, on: x+, moment: [0 N*mm, 0 N*mm, 1 N*mm]}\n",
+      {"named.yaml:5:", "loads[0].on = 'x+'", "drilling"});
+  expect_case_error(plate +
+                        "loads:\n  - {type: edge, on: x+, moment_per_length: [0 N*mm/mm, 0 "
+                        "N*mm/mm, 1 N*mm/mm]}\n",
+                    {"named.yaml:5:", "loads[0].on = 'x+'", "drilling"});
+  expect_case_error(plate +
+                        "loads:\n  - {type: moment, on: x+, at: [0 mm, 0 mm, 0 mm], moment: [0 "
+                        "N*mm, 1 N*mm, 0 N*mm]}\n",
+                    {"named.yaml:5:", "exactly one of `on`"});
   expect_case_error(plate + "loads:\n  - {type: point, on: corner, force: [0 N, 0 N, 1 N]}\n",
                     {"named.yaml:5:", "loads[0].on = 'corner'", "no set 'corner'"});
   expect_case_error(kSteelHead + "mesh: {grading: uniform}\n", {"mesh.grading", "always graded"});

@@ -120,6 +120,25 @@ TEST(SzeCaseFiles, CantileverEndShear_SzeLiuLo2004Sec31_S4RTable) {
   expect_column("3.1, 16x2", source, t, "x+_uz_mm", 1, twentieths(), w, 0.015, 0.002);
 }
 
+// Sec. 3.2: the strip rolled into a full circle by an end moment (a moment per length along the
+// free end). Reference: the exact elastica, theta = M L / EI, -U = L (1 - sin theta / theta),
+// W = L (1 - cos theta) / theta; acceptance 1 % of L, as
+// SzeLiuLo2004_CantileverEndMoment_ExactElastica_Mitc4_32x1 (mesh 32 x 4 here).
+TEST(SzeCaseFiles, CantileverEndMoment_SzeLiuLo2004Sec32_ExactElastica) {
+  const double L = 12, pi = std::acos(-1.0);
+  std::vector<double> minus_u, w;
+  for (double f : twentieths()) {
+    const double theta = 2 * pi * f;
+    minus_u.push_back(L * (1 - std::sin(theta) / theta));
+    w.push_back(L * (1 - std::cos(theta)) / theta);
+  }
+  const fs::path out = run_sze_case("sze_3-2_cantilever_end_moment.yaml", "sze_32");
+  const CsvTable t = read_csv_table((out / "static.csv").string());
+  const char* source = "exact elastica (Sze, Liu & Lo 2004 sec. 3.2)";
+  expect_column("3.2, 32x4", source, t, "x+_ux_mm", -1, twentieths(), minus_u, 0, 0.01 * L);
+  expect_column("3.2, 32x4", source, t, "x+_uz_mm", 1, twentieths(), w, 0, 0.01 * L);
+}
+
 // Sec. 3.3 (MBDyn sze33_ref.dat = csv/sze2004_3-3_slit_annular_plate.csv), the levels that are
 // load steps of the 20-step run; W_A (13.891 at qmax) at the inner corner A of the loaded lip,
 // W_B (17.528) at the outer corner B (nonlinear.md's label caution). Acceptance 2 %, as
