@@ -16,6 +16,7 @@ constexpr int kPatchDegree = 3;
 constexpr int kPatchNodes = 25;
 // Bottom, middle and top of every ply: what ThroughThicknessFailure::evaluate reads.
 constexpr int kPointsPerPly = 3;
+constexpr double kPi = 3.14159265358979323846;
 
 int nearest_node(const Mesh& mesh, const Vector3d& x) {
   int best = 0;
@@ -56,12 +57,16 @@ std::vector<int> monitored_nodes(const ShellModel& model, const DamageSpec& spec
 
 DamageProbe::DamageProbe(const ShellModel& model, const Assembler& assembler,
                          const Laminate& laminate, const DamageSpec& spec,
-                         const Vector3d& direction, const std::vector<int>& candidates)
+                         const Vector3d& direction, const std::vector<int>& candidates,
+                         const LocalContactLaw& face_law)
     : model_(model),
       assembler_(assembler),
       spec_(spec),
       section_(analyze_vam(laminate)),
-      failure_(laminate, spec.criteria) {
+      failure_(laminate, spec.criteria),
+      face_law_(face_law),
+      direction_(direction.normalized()) {
+  const double patch_radius = spec.patch_radius < 0 ? laminate.thickness() : spec.patch_radius;
   const int apex = model.apex_node();
   loaded_sign_ = direction.dot(model.mesh.directors[apex]) <= 0 ? 1.0 : -1.0;
   reported_.push_back({"apex", apex});
@@ -81,8 +86,11 @@ DamageProbe::DamageProbe(const ShellModel& model, const Assembler& assembler,
     const auto closer = [&](int a, int b) {
       return (model.mesh.nodes[a] - x).squaredNorm() < (model.mesh.nodes[b] - x).squaredNorm();
     };
-    const int count = std::min(kPatchNodes, model.mesh.num_nodes());
-    std::partial_sort(order.begin(), order.begin() + count, order.end(), closer);
+    std::sort(order.begin(), order.end(), closer);
+    int count = std::min(kPatchNodes, model.mesh.num_nodes());
+    while (count < model.mesh.num_nodes() &&
+           (model.mesh.nodes[order[count]] - x).norm() <= patch_radius)
+      ++count;
     order.resize(count);
     for (int n : order)
       if (row[n] < 0) {
@@ -144,7 +152,34 @@ Eigen::MatrixXd DamageProbe::patch_strains(const std::vector<NodeState>& states)
   return sum;
 }
 
+double DamageProbe::axial_distance(int n) const {
+  const Vector3d d = model_.mesh.nodes[n] - model_.mesh.nodes[model_.apex_node()];
+  return (d - d.dot(direction_) * direction_).norm();
+}
+
+// Hertz (point-loads.md 4.3; Johnson 1985, 4.2): with F = (4/3) E* R^0.5 alpha^1.5 = k
+// alpha^1.5, the contact radius a = (3 F R / (4 E*))^(1/3) = (F R^1.5 / k)^(1/3) and the pressure
+// p0 sqrt(1 - r^2 / a^2), p0 = 3 F / (2 pi a^2). Where the shell model's own contact patch is
+// wider (a conforming contact, several nodes pressed) its radius is taken, with the same total
+// force and shape: what the mesh resolves is kept, what it cannot is Hertz's.
+std::vector<double> DamageProbe::hertz_pressures(const ProbePoint& point) const {
+  std::vector<double> p(monitored_.size(), 0.0);
+  if (!(point.force > 0)) return p;
+  double a = std::cbrt(point.force * std::pow(face_law_.radius, 1.5) / face_law_.k);
+  for (std::size_t i = 0; i < point.candidates.size(); ++i)
+    if (point.pressures[static_cast<Eigen::Index>(i)] > 0)
+      a = std::max(a, axial_distance(point.candidates[i]));
+  const double p0 = 3 * point.force / (2 * kPi * a * a);
+  for (std::size_t k = 0; k < monitored_.size(); ++k) {
+    const double r = axial_distance(monitored_[k]);
+    if (r < a) p[k] = p0 * std::sqrt(1 - r * r / (a * a));
+  }
+  return p;
+}
+
 std::vector<double> DamageProbe::monitored_pressures(const ProbePoint& point) const {
+  if (spec_.face_pressure == FacePressure::kHertz && face_law_.kind == LocalLawKind::kPowerLaw)
+    return hertz_pressures(point);
   std::vector<double> p(monitored_.size(), 0.0);
   for (std::size_t i = 0; i < point.candidates.size(); ++i) {
     const int k = monitored_index_[point.candidates[i]];

@@ -1,9 +1,10 @@
 // The failure indices of a depth path's points (docs/theory/failure.md 6, items 2-3): at each
 // monitored node near the indenter, the shell's strains R and their in-plane derivatives from a
-// patch fit of the nodal strains (model/patch_fit.hpp, degree 3 over the 25 nearest nodes, in the
-// tangent plane), the contact pressure on the loaded face, the 3-D ply stresses recovered
-// through the thickness (section/through_thickness_recovery.hpp, first-order or refined), and
-// the criteria of the case at the bottom, middle and top of every ply and at every interface
+// patch fit of the nodal strains (model/patch_fit.hpp, degree 3 over the nodes within
+// DamageSpec::patch_radius and at least the 25 nearest, in the tangent plane), the contact
+// pressure on the loaded face (Hertzian or nodal, DamageSpec::face_pressure), the 3-D ply stresses
+// recovered through the thickness (section/through_thickness_recovery.hpp, first-order or refined),
+// and the criteria of the case at the bottom, middle and top of every ply and at every interface
 // (damage/through_thickness_failure.hpp). The state's `failure` gets, per criterion, the largest
 // index over the monitored nodes and where it is.
 //
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "analysis/damage_spec.hpp"
+#include "contact/local_contact_law.hpp"
 #include "damage/through_thickness_failure.hpp"
 #include "indentation/state_probe.hpp"
 #include "model/assembler.hpp"
@@ -42,9 +44,11 @@ class DamageProbe : public StateProbe {
   // away from). `candidates`: the contact candidates, monitored unless spec.radius > 0. Keeps
   // references to model and assembler. Throws an input si::Error naming the material and key
   // when a ply lacks a strength a criterion reads (io/ refuses such a case at reading already).
+  // `face_law`: the power law whose Hertz form (k, radius) sizes the resolved face pressure
+  // (DamageSpec::face_pressure kHertz); without one (kind kNone) the pressure is the nodal one.
   DamageProbe(const ShellModel& model, const Assembler& assembler, const Laminate& laminate,
-              const DamageSpec& spec, const Vector3d& direction,
-              const std::vector<int>& candidates);
+              const DamageSpec& spec, const Vector3d& direction, const std::vector<int>& candidates,
+              const LocalContactLaw& face_law);
 
   void measure(const ProbePoint& point, IndentationState& out) const override;
 
@@ -69,12 +73,17 @@ class DamageProbe : public StateProbe {
   NodeDamage at_node(int k, const Eigen::MatrixXd& strains, double pressure) const;
   void build_recovery_map();
   std::vector<double> monitored_pressures(const ProbePoint& point) const;
+  std::vector<double> hertz_pressures(const ProbePoint& point) const;
+  // Distance of mesh node n (reference position) from the indenter's axis through the apex.
+  double axial_distance(int n) const;
 
   const ShellModel& model_;
   const Assembler& assembler_;
   DamageSpec spec_;
   VamSection section_;
   ThroughThicknessFailure failure_;
+  LocalContactLaw face_law_;
+  Vector3d direction_;
   double loaded_sign_;  // +1: the indenter loads the top face (t+ = -p); -1: the bottom (t- = p)
   std::vector<int> monitored_;
   std::vector<int> monitored_index_;  // per mesh node: position in monitored_, -1 if none

@@ -21,6 +21,13 @@ namespace si {
 // third derivatives (Pagano-verified, docs/theory/failure.md 3).
 enum class StressRecovery { kFirstOrder, kRefined };
 
+// The contacted face's pressure the recovery reads (docs/theory/failure.md 7): Hertz's
+// p0 sqrt(1 - r^2/a^2) carrying the indenter's force over the larger of Hertz's contact radius
+// (the local law's, or the laminate's anisotropic half-space) and the shell model's own patch,
+// or each contact node's multiplier over its tributary area (the mesh's pressure: onsets that
+// read it scale with the apex element's area).
+enum class FacePressure { kHertz, kNodal };
+
 // A point where the recovered stresses and indices are reported (and monitored): the mesh node
 // nearest to `position`. The apex is always one (name "apex").
 struct DamagePoint {
@@ -39,6 +46,13 @@ struct DamageSpec {
   std::vector<Criterion> criteria;  // monitored, one result column each; distinct
   std::vector<DamagePoint> points;  // besides the apex
   StressRecovery recovery = StressRecovery::kRefined;
+  FacePressure face_pressure = FacePressure::kHertz;
+  // The strains' patch fit at a node takes every node within this distance (mm), and at least
+  // the 25 nearest: shell resultants near a concentrated load mean something on the scale of
+  // the thickness, and a fit over a fixed length converges with the mesh where one over a fixed
+  // number of nodes follows the load's singularity. Negative: the laminate's thickness; 0: the
+  // 25 nearest nodes only.
+  double patch_radius = -1;
   // Nodes monitored: those within `radius` mm of the apex's line of travel; 0 = the contact
   // candidates (the nodes the indenter can reach within the path), the apex and the points.
   double radius = 0;

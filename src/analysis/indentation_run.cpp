@@ -470,7 +470,8 @@ IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolve
   }
   if (spec.damage && !spec.damage->criteria.empty()) {
     damage = std::make_shared<DamageProbe>(model, problem->assembler(), spec.laminate, *spec.damage,
-                                           pose.direction, problem->candidates());
+                                           pose.direction, problem->candidates(),
+                                           face_pressure_law(spec));
     problem->set_probe(damage);
   }
 }

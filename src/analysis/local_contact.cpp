@@ -49,4 +49,15 @@ LocalContactLaw local_contact_law(const IndentationCase& c) {
   return hertz_law(R, hertz_modulus(Ei, nui, top.E3, top.nu23));
 }
 
+LocalContactLaw face_pressure_law(const IndentationCase& c) {
+  const LocalContactLaw own = local_contact_law(c);
+  if (own.kind == LocalLawKind::kPowerLaw) return own;
+  if (c.indenter.shape != IndenterShape::kSphere) return {};
+  IndentationCase anisotropic = c;
+  anisotropic.contact.local = LocalContactModel::kAnisotropic;
+  anisotropic.contact.local_support = LocalSupport::kHalfSpace;
+  anisotropic.contact.local_plies = LocalPlies::kHomogenised;
+  return local_contact_law(anisotropic);
+}
+
 }  // namespace si

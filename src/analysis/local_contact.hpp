@@ -25,4 +25,11 @@ namespace si {
 
 LocalContactLaw local_contact_law(const IndentationCase& c);
 
+// The law that sizes the contacted face's resolved (Hertzian) pressure in the stress recovery
+// (analysis/damage_probe.hpp, docs/theory/failure.md 7): the case's own power law if it has one,
+// else, for a sphere, the laminate's anisotropic half-space (homogenised upper half, the relative
+// radius R as above; the law whose approach matches a resolved 3-D model best,
+// local-indentation.md 6.7); other indenters: none (the nodal pressure).
+LocalContactLaw face_pressure_law(const IndentationCase& c);
+
 }  // namespace si

@@ -104,11 +104,19 @@ ThresholdSpec read_threshold(const MapReader& damage, const Laminate& laminate) 
 std::optional<DamageSpec> read_damage(const MapReader& top, const Laminate& laminate) {
   if (!top.has("damage")) return std::nullopt;
   const MapReader map(top.at("damage"), top.where("damage"));
-  map.allow_only({"criteria", "points", "recovery", "radius", "impact_energies", "threshold"});
+  map.allow_only({"criteria", "points", "recovery", "face_pressure", "patch_radius", "radius",
+                  "impact_energies", "threshold"});
   DamageSpec d;
   if (map.has("criteria")) d.criteria = read_criteria(map, laminate);
   if (map.has("points")) d.points = read_points(map);
   d.recovery = map.choice_or("recovery", recovery_spellings(), d.recovery);
+  d.face_pressure = map.choice_or("face_pressure", face_pressure_spellings(), d.face_pressure);
+  if (map.has("patch_radius")) {
+    d.patch_radius = map.quantity("patch_radius", Dimension::kLength);
+    if (!(d.patch_radius >= 0))
+      throw_input("expected a length >= 0 (0: the 25 nearest nodes only)",
+                  map.where("patch_radius"));
+  }
   d.radius = map.positive_or("radius", Dimension::kLength, 0.0);
   if (map.has("impact_energies")) d.impact_energies = read_energies(map);
   if (map.has("threshold")) d.threshold = read_threshold(map, laminate);

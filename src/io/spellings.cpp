@@ -45,6 +45,12 @@ const Choices<StressRecovery>& recovery_spellings() {
   return c;
 }
 
+const Choices<FacePressure>& face_pressure_spellings() {
+  static const Choices<FacePressure> c{{"hertz", FacePressure::kHertz},
+                                       {"nodal", FacePressure::kNodal}};
+  return c;
+}
+
 const Choices<EffectiveBendingStiffness>& bending_stiffness_spellings() {
   static const Choices<EffectiveBendingStiffness> c{
       {"olsson", EffectiveBendingStiffness::kOlsson},

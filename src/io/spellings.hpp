@@ -24,6 +24,7 @@ const Choices<Kinematics>& kinematics_spellings();  // linear, nonlinear
 // Damage onset (docs/case-file.md `damage`, docs/results.md).
 const Choices<Criterion>& criterion_spellings();      // max_stress, tsai_wu, hashin, delamination
 const Choices<StressRecovery>& recovery_spellings();  // first_order, refined
+const Choices<FacePressure>& face_pressure_spellings();                   // hertz, nodal
 const Choices<EffectiveBendingStiffness>& bending_stiffness_spellings();  // olsson, geometric_mean
 const Choices<FailureMode>& failure_mode_spellings();      // fibre_tension, ..., delamination
 const Choices<PlyPosition>& ply_position_spellings();      // bottom, middle, top

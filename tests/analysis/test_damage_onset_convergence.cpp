@@ -1,25 +1,32 @@
-// Issue 16: does the damage onset on the source paper's cap converge with the mesh? The cap
+// Issue 16: the damage onset on the source paper's cap converges with the mesh. The cap
 // ([0/90]2S, clamped, base radius 25 mm, R = 80.9 mm, 8 plies of 0.475 mm of paper-carbon-epoxy,
 // 12.7 mm sphere, nonlinear, full model) is run with the four criteria monitored on three meshes
-// refined by sqrt(2) everywhere (apex and edge sizes 2/4, 1.41/2.83, 1/2 mm).
+// refined by sqrt(2) everywhere (apex and edge sizes 1.41/2.83, 1/2, 0.71/1.41 mm).
 //
-// It does not converge, and this test pins down why (docs/theory/failure.md 7): the first onset
-// is the through-thickness compression of the contacted face, sigma33 = -p with p the apex node's
-// contact force over its tributary area (the nodal Lagrange multiplier; the contact patch of the
-// shell model spans one node up to ~1 kN on these meshes). So the maximum-stress onset sits at
-// F = Z_C x (the apex node's area) = Z_C size_apex^2: it halves with each refinement by sqrt(2),
-// the onset of a point load whose pressure the mesh cannot resolve. The test checks that law
-// (to 1 %) and the mode; the table it prints (all four criteria, all three meshes) is that
-// section's. A mesh-converged onset needs the contact pressure resolved (a contact radius of
-// several elements, or a Hertzian pressure fed to the recovery): not built.
+// With the nodal face pressure (a node's multiplier over its tributary area) and patches of the
+// 25 nearest nodes the onsets did not converge: the maximum-stress onset sat at F = Z_C
+// size_apex^2 and halved with each refinement (docs/theory/failure.md 7). The recovery now reads
+// Hertz's pressure of the indenter's force (the laminate's anisotropic half-space sizing the
+// contact radius) and fits the strains over the thickness around each node. Checked here:
+//  * the maximum-stress onset is the contacted face's compression at Hertz's closed form
+//    F = pi^3 R^2 Z_C^3 / (6 E*^2) on every mesh (no mesh size enters it);
+//  * the Tsai-Wu and Hashin onsets (matrix compression of the contacted ply) converge: the
+//    differences between successive meshes shrink, and the finest mesh lies within 3 % of the
+//    Richardson limit of the three (the tolerance stated in docs/theory/failure.md 7; the
+//    measured errors are printed);
+//  * the quadratic delamination onset does NOT converge yet (3141, 2983, 2731 N: the differences
+//    grow), printed but not asserted: the interlaminar stresses come from the third derivatives
+//    of the fitted strains under a shell that is still point-loaded (docs/theory/failure.md 7).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "analysis/indentation_run.hpp"
+#include "analysis/local_contact.hpp"
 #include "io/case_file.hpp"
 
 namespace si {
@@ -29,6 +36,7 @@ struct MeshRun {
   double size_apex = 0;
   int unknowns = 0;
   std::map<Criterion, DamageOnset> onsets;  // the first of each criterion
+  LocalContactLaw face_law;                 // what sized the face pressure
 };
 
 MeshRun run_mesh(double size_apex) {
@@ -49,15 +57,19 @@ MeshRun run_mesh(double size_apex) {
   MeshRun out;
   out.size_apex = size_apex;
   out.unknowns = setup.problem->num_shell_unknowns();
+  out.face_law = face_pressure_law(setup.spec);
   for (const DamageOnset& o : r.damage.onsets) out.onsets.emplace(o.criterion, o);
   return out;
 }
 
-TEST(DamageOnsetConvergence, PaperCapOnsetIsTheApexNodesPressureAndDoesNotConverge) {
+TEST(DamageOnsetConvergence, PaperCapOnsetsConvergeWithTheResolvedFacePressure) {
   const double Z_C = 200;  // MPa, paper-carbon-epoxy (docs/materials.md)
+  const double pi = std::acos(-1.0);
   std::printf("apex/edge (mm) | unknowns | criterion | depth (mm) | force (N) | mode, where\n");
-  for (double size : {2.0, 2.0 / std::sqrt(2.0), 1.0}) {
-    const MeshRun m = run_mesh(size);
+  std::vector<MeshRun> runs;
+  for (double size : {std::sqrt(2.0), 1.0, 1.0 / std::sqrt(2.0)}) {
+    runs.push_back(run_mesh(size));
+    const MeshRun& m = runs.back();
     for (const auto& [criterion, o] : m.onsets)
       std::printf("%.3f/%.3f | %d | %s | %.4f | %.1f | mode %d, ply %d%s\n", size, 2 * size,
                   m.unknowns, criterion_name(criterion), o.depth, o.force,
@@ -65,12 +77,30 @@ TEST(DamageOnsetConvergence, PaperCapOnsetIsTheApexNodesPressureAndDoesNotConver
     ASSERT_TRUE(m.onsets.count(Criterion::kMaxStress)) << size << " mm mesh";
     const DamageOnset& o = m.onsets.at(Criterion::kMaxStress);
     EXPECT_TRUE(o.located);
-    // sigma33 = -Z_C on the contacted face (the top of the outer ply 8) at the apex node, whose
-    // tributary area on the O-grid is size_apex^2 (four quarter elements).
     EXPECT_EQ(o.at.mode, FailureMode::kNormalCompression);
     EXPECT_EQ(o.at.ply, 7);
     EXPECT_EQ(o.at.position, PlyPosition::kTop);
-    EXPECT_NEAR(o.force, Z_C * size * size, 0.01 * Z_C * size * size) << size << " mm mesh";
+    const double R = m.face_law.radius, E = 3 * m.face_law.k / (4 * std::sqrt(R));
+    const double hertz = pi * pi * pi * R * R * Z_C * Z_C * Z_C / (6 * E * E);
+    EXPECT_NEAR(o.force, hertz, 1e-6 * hertz) << size << " mm mesh";
+  }
+  for (Criterion c : {Criterion::kTsaiWu, Criterion::kHashin}) {
+    std::vector<double> f;
+    for (const MeshRun& m : runs) {
+      ASSERT_TRUE(m.onsets.count(c))
+          << criterion_name(c) << " on the " << m.size_apex << " mm mesh";
+      f.push_back(m.onsets.at(c).force);
+    }
+    const double d1 = f[1] - f[0], d2 = f[2] - f[1];
+    EXPECT_LT(std::abs(d2), std::abs(d1)) << criterion_name(c) << ": the differences must shrink";
+    // Richardson from three meshes (monotone: d2 / d1 in (0, 1)); the finest mesh's error.
+    const double ratio = d2 / d1;
+    ASSERT_GT(ratio, 0.0) << criterion_name(c) << ": not monotone";
+    const double limit = f[2] + d2 * ratio / (1 - ratio);
+    const double error = std::abs(f[2] - limit) / std::abs(limit);
+    std::printf("%s: Richardson limit %.1f N, finest mesh %.2f %% off (ratio %.2f)\n",
+                criterion_name(c), limit, 100 * error, ratio);
+    EXPECT_LT(error, 0.03) << criterion_name(c);
   }
 }
 

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "analysis/indentation_run.hpp"
+#include "analysis/local_contact.hpp"
 #include "analysis/path_columns.hpp"
 #include "io/case_file.hpp"
 #include "section/clt_section.hpp"
@@ -23,7 +24,8 @@ namespace si {
 namespace {
 
 // A flat clamped plate, linear kinematics, a 1 mm sphere on a 2 mm mesh: only the apex node is
-// ever in contact (its neighbours lie beyond the sphere), so the problem is linear in the depth.
+// ever in contact (its neighbours lie beyond the sphere), so the problem is linear in the depth;
+// with the nodal face pressure (the node's multiplier over its area) so is the recovery.
 const char* kLinearPlate =
     "material: paper-carbon-epoxy\n"
     "laminate: {layup: \"[0/90]S\", ply_thickness: 0.475 mm}\n"
@@ -34,6 +36,7 @@ const char* kLinearPlate =
     "path: {depth_max: 1 mm, step: 0.1 mm}\n"
     "damage:\n"
     "  criteria: [max_stress, tsai_wu, hashin, delamination]\n"
+    "  face_pressure: nodal\n"
     "  impact_energies: [50 N*mm, 150 N*mm, 1 J]\n"
     "  threshold: {stiffness: olsson}\n";
 
@@ -97,6 +100,35 @@ TEST(DamagePath, LinearIndicesProportionalToDepthAndOnsetAtTheClosedFormRatio) {
   EXPECT_LT(index_of(r.points.back(), Criterion::kQuadraticDelamination), 1e-6);
   for (const DamageOnset& o : r.damage.onsets)
     EXPECT_NE(o.criterion, Criterion::kQuadraticDelamination);
+}
+
+// The resolved face pressure (damage.face_pressure: hertz, the default): the contacted face's
+// sigma33 at the apex is -p0 of Hertz, p0 = (6 F E*^2 / (pi^3 R^2))^(1/3) (Johnson 1985, eq.
+// 4.24) with E* and R of the laminate's anisotropic half-space law (k = (4/3) E* R^0.5). On the
+// linear plate the maximum-stress onset is that compression reaching Z_C, at
+// F = pi^3 R^2 Z_C^3 / (6 E*^2): a force that no mesh size enters.
+TEST(DamagePath, HertzFacePressureMaxStressOnsetAtTheClosedForm) {
+  std::string text = kLinearPlate;
+  text.replace(text.find("  face_pressure: nodal\n"), 22, "");
+  const DamageRun done = run(text);
+  const PathResult& r = done.result;
+  ASSERT_TRUE(r.completed) << r.reason;
+  const LocalContactLaw law = face_pressure_law(done.setup->spec);
+  ASSERT_EQ(law.kind, LocalLawKind::kPowerLaw);
+  const double R = law.radius, E = 3 * law.k / (4 * std::sqrt(R)), Z_C = 200;  // docs/materials.md
+  const double pi = std::acos(-1.0);
+  const double expected = pi * pi * pi * R * R * Z_C * Z_C * Z_C / (6 * E * E);
+  int found = 0;
+  for (const DamageOnset& o : r.damage.onsets)
+    if (o.criterion == Criterion::kMaxStress) {
+      ++found;
+      EXPECT_TRUE(o.located);
+      EXPECT_EQ(o.at.mode, FailureMode::kNormalCompression);
+      EXPECT_EQ(o.at.ply, 3);  // the contacted outer ply's top
+      EXPECT_EQ(o.at.position, PlyPosition::kTop);
+      EXPECT_NEAR(o.force, expected, 1e-6 * expected);
+    }
+  EXPECT_EQ(found, 1);
 }
 
 TEST(DamagePath, ThresholdIsTheDamageFunctionsValue) {
