@@ -409,7 +409,6 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   finish(r, ok, run_status(b.status), end_reason(b, s.spec.path));
   return r;
 }
-
 }  // namespace
 
 cont::NewtonSettings path_newton_settings(const IndentationSetup& s) {

@@ -43,6 +43,7 @@ enum class PathColumn {
   kK12ContactMax,
   kK22ContactMin,
   kK22ContactMax,
+  kErrorEstimate,
   // The failure indices (damage/failure_index.hpp), only in runs whose case monitors the
   // criterion (docs/case-file.md `damage.criteria`).
   kMaxStressIndex,

@@ -201,6 +201,29 @@ void print_damage_summary(const PathResult& r, std::ostream& out) {
   }
 }
 
+// The run's discretisation error in words (docs/theory/discretisation-error.md): the largest
+// estimate over the path and the last one; a warning on `err` above mesh.tolerance.
+void print_error_summary(const PathResult& r, double tolerance, std::ostream& out,
+                         std::ostream& err) {
+  const PathPoint* worst = nullptr;
+  for (const PathPoint& p : r.points)
+    if (!worst || p.state.error_estimate > worst->state.error_estimate) worst = &p;
+  if (!worst || !(worst->state.error_estimate > 0)) return;
+  const auto percent = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2g %%", 100 * v);
+    return std::string(text);
+  };
+  const std::string at = format_quantity(worst->state.depth, Dimension::kLength);
+  out << "discretisation error (Zienkiewicz-Zhu, energy norm): max "
+      << percent(worst->state.error_estimate) << " at depth " << at << ", "
+      << percent(r.points.back().state.error_estimate) << " at the last point\n";
+  if (tolerance > 0 && worst->state.error_estimate > tolerance)
+    err << "shellindent: warning: mesh.tolerance = " << percent(tolerance)
+        << " exceeded (estimated " << percent(worst->state.error_estimate) << " at depth " << at
+        << "): refine mesh.size_apex\n";
+}
+
 }  // namespace
 
 int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream& err) {
@@ -287,6 +310,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
                   : "")
           << " at depth " << e.p << " mm\n";
   print_damage_summary(r, out);
+  print_error_summary(r, cf.mesh.tolerance, out, err);
   for (const std::string& line : critical_points_summary(r.critical)) out << line << "\n";
 
   std::vector<std::string> written = write_path_files(dir, formats, setup, r, vtus, damage_rows);

@@ -336,6 +336,8 @@ IndentationState IndentationProblem::evaluate(const cont::Vector& z, double h) {
   const std::vector<NodeState> s = node_states(z);
   shell_.energy_and_reaction(z.head(shell_.size()), out.energy, out.reaction);
   quantities(z, s, h, out);
+  // Without a contact force nothing is loaded: the relative error of a zero field is round-off.
+  out.error_estimate = out.force > 0 ? shell_.error_estimate(s) : 0.0;
   const TermPoint p{z, h, s};
   for (const auto& t : parts_.terms) t->outputs(p, out);
   // The support frame is a support too: its force joins the reaction along -e.

@@ -22,6 +22,9 @@ struct IndentationState {
   double contact_area = 0;     // tributary area of the nodes in contact, mm^2
   int contact_nodes = 0;       // nodes in contact (whole-shell count is not reconstructed)
   double energy = 0;           // strain energy, N mm
+  // The point's estimated relative energy-norm discretisation error (model/recovery_error.hpp,
+  // Zienkiewicz-Zhu).
+  double error_estimate = 0;
   // Local contact (zero without): the approach of the indenter towards the contact face at the
   // apex (alpha for a power law, c_L p at the apex node for the thin layer), mm, and the energy
   // stored in the local compliance, N mm (work = energy + local_energy).

@@ -1,5 +1,7 @@
 #include "indentation/shell_part.hpp"
 
+#include "model/recovery_error.hpp"
+
 #include "core/error.hpp"
 #include "model/nodal_resultants.hpp"
 
@@ -108,6 +110,10 @@ Vector3d ShellPart::curvature(const std::vector<NodeState>& s, int node) const {
   return nodal_strain_at(model_.mesh, assembler_, *model_.element, s, node, node_elements_[node])
       .segment<3>(3)
       .transpose();
+}
+
+double ShellPart::error_estimate(const std::vector<NodeState>& s) const {
+  return recovery_error(model_.mesh, assembler_, *model_.element, model_.law, s).relative();
 }
 
 // Linear kinematics: the support reaction along e is linear in x, r_e . x with

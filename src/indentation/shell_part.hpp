@@ -64,6 +64,8 @@ class ShellPart {
   void energy_and_reaction(const Eigen::VectorXd& x, double& energy, double& reaction);
   // k11, k12 + k21, k22 at mesh node `node`, averaged over its elements (1/mm).
   Vector3d curvature(const std::vector<NodeState>& s, int node) const;
+  // The relative energy-norm discretisation error of the state (model/recovery_error.hpp).
+  double error_estimate(const std::vector<NodeState>& s) const;
   // A quarter of each adjacent element's area, mm^2.
   double tributary_area(int node) const { return tributary_area_[node]; }
 

@@ -109,7 +109,7 @@ bool has_mesh_file(const MapReader& top) {
 // mesh.file, resolved against the directory of the case file, must exist now (nothing is run or
 // written for a case whose mesh cannot be read).
 void read_mesh_file(const MapReader& map, MeshSpec& mesh) {
-  map.allow_only({"element", "file", "reorient", "flip", "symmetry"});
+  map.allow_only({"element", "file", "reorient", "flip", "symmetry", "tolerance"});
   const std::filesystem::path file = map.scalar("file");
   const std::filesystem::path base = std::filesystem::path(map.where().file).parent_path();
   mesh.file = (file.is_absolute() ? file : base / file).string();
@@ -129,7 +129,8 @@ MeshSpec read_mesh(const MapReader& top, ShellType shell, bool graded) {
   if (map->has("file")) {
     read_mesh_file(*map, mesh);
   } else {
-    map->allow_only({"element", "size_apex", "size_edge", "refine_radius", "symmetry", "grading"});
+    map->allow_only(
+        {"element", "size_apex", "size_edge", "refine_radius", "symmetry", "grading", "tolerance"});
     mesh.graded = map->choice_or("grading", kGradings, mesh.graded);
     const bool grid =
         shell == ShellType::kRectangularPlate || shell == ShellType::kCylindricalPanel;
@@ -144,6 +145,7 @@ MeshSpec read_mesh(const MapReader& top, ShellType shell, bool graded) {
   mesh.size_edge = map->positive_or("size_edge", Dimension::kLength, mesh.size_edge);
   mesh.refine_radius = map->positive_or("refine_radius", Dimension::kLength, mesh.refine_radius);
   mesh.symmetry = map->choice_or("symmetry", kSymmetries, mesh.symmetry);
+  mesh.tolerance = fraction_or(*map, "tolerance", 0.0);
   return mesh;
 }
 

@@ -14,6 +14,9 @@ struct MeshSpec {
   double size_apex = 0.5;       // mm
   double size_edge = 2.0;       // mm
   double refine_radius = 13.0;  // mm, measured from the indentation point in plan
+  // The largest estimated discretisation error (relative, energy norm: IndentationState::
+  // error_estimate) the user accepts; a run above it warns. 0: no tolerance.
+  double tolerance = 0;
   Symmetry symmetry = Symmetry::kFull;
   // Rectangular plates and cylindrical panels: graded like the cap (size_apex within
   // refine_radius, growing to size_edge) instead of uniform at size_apex.

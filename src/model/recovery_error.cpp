@@ -34,8 +34,7 @@ RecoveryError recovery_error(const Mesh& mesh, const Assembler& assembler,
   Eigen::MatrixXd recovered = Eigen::MatrixXd::Zero(8, mesh.num_nodes());
   Eigen::VectorXd count = Eigen::VectorXd::Zero(mesh.num_nodes());
   for (int e = 0; e < elements; ++e) {
-    strains[e] = element.strains_at_nodes(assembler.geometry(e),
-                                          assembler.element_states(state, e),
+    strains[e] = element.strains_at_nodes(assembler.geometry(e), assembler.element_states(state, e),
                                           assembler.kinematics());
     for (int a = 0; a < 4; ++a) {
       recovered.col(mesh.elements[e][a]) += stacked(strains[e], a);

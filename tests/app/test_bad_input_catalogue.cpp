@@ -348,6 +348,11 @@ std::vector<BadInput> case_file_rows() {
               {"case.yaml:3", "path.nonlinearity_fraction", "fraction in (0, 1)"}),
       run_row("NonlinearityFractionWithAUnit", kHead + "path: {nonlinearity_fraction: 5 mm}\n",
               {"case.yaml:3", "path.nonlinearity_fraction", "without a unit"}),
+      // Issue 19 item 1: the discretisation error's tolerance.
+      run_row("MeshToleranceAboveOne", kHead + "mesh: {tolerance: 2}\n",
+              {"case.yaml:3", "mesh.tolerance", "fraction in (0, 1)"}),
+      run_row("MeshToleranceWithAUnit", kHead + "mesh: {tolerance: 1 mm}\n",
+              {"case.yaml:3", "mesh.tolerance", "without a unit"}),
       run_row("VtuEveryNegative", kHead + "output: {vtu_every: -1}\n",
               {"case.yaml:3", "output.vtu_every", ">= 0"}),
       run_row("VtuEveryNotWhole", kHead + "output: {vtu_every: 1.5}\n",

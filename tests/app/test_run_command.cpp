@@ -63,6 +63,34 @@ TEST(RunCommand, LinearPathWritesTableCsvJsonAndVtu) {
   EXPECT_TRUE(contains(testing::read_file(dir / "out" / "path.pvd"), "path_0002.vtu"));
 }
 
+// Every run states its discretisation error (path.csv's error_estimate, one stdout line); a
+// mesh.tolerance below it adds a warning naming the depth, one above it none.
+TEST(RunCommand, StatesTheDiscretisationErrorAndWarnsAboveTheTolerance) {
+  const std::string base = cap_case("nonlinear", "{shape: sphere, radius: 12.7 mm}",
+                                    "{method: natural, depth_max: 0.5 mm, step: 0.25 mm}");
+  const auto run = [&](const fs::path& dir, const std::string& tolerance) {
+    std::string text = base;
+    text.replace(text.find("symmetry: quarter}"), 18,
+                 "symmetry: quarter, tolerance: " + tolerance + "}");
+    const fs::path c = write_case(dir, text);
+    return run_cli("run '" + c.string() + "' --out '" + (dir / "out").string() + "'");
+  };
+  const auto strict = run(fresh_dir("error_strict"), "0.1 %");
+  ASSERT_EQ(strict.exit_code, 0) << strict.output;
+  EXPECT_TRUE(contains(strict.output, "discretisation error (Zienkiewicz-Zhu, energy norm): max "))
+      << strict.output;
+  EXPECT_TRUE(contains(strict.output, "warning: mesh.tolerance = 0.1 % exceeded (estimated "))
+      << strict.output;
+  EXPECT_TRUE(contains(strict.output, "refine mesh.size_apex")) << strict.output;
+  const fs::path loose_dir = fresh_dir("error_loose");
+  const auto loose = run(loose_dir, "90 %");
+  ASSERT_EQ(loose.exit_code, 0) << loose.output;
+  EXPECT_TRUE(contains(loose.output, "discretisation error")) << loose.output;
+  EXPECT_FALSE(contains(loose.output, "mesh.tolerance")) << loose.output;
+  const std::string csv = testing::read_file(loose_dir / "out" / "path.csv");
+  EXPECT_TRUE(contains(csv.substr(0, csv.find('\n')), "error_estimate"));
+}
+
 TEST(RunCommand, IndenterBesideTheShellIsRefused) {
   const fs::path dir = fresh_dir("run_miss");
   const fs::path c = write_case(
