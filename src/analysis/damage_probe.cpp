@@ -66,7 +66,7 @@ DamageProbe::DamageProbe(const ShellModel& model, const Assembler& assembler,
       failure_(laminate, spec.criteria),
       face_law_(face_law),
       direction_(direction.normalized()) {
-  const double patch_radius = spec.patch_radius < 0 ? laminate.thickness() : spec.patch_radius;
+  const double patch_radius = spec.patch_radius < 0 ? 2 * laminate.thickness() : spec.patch_radius;
   const int apex = model.apex_node();
   loaded_sign_ = direction.dot(model.mesh.directors[apex]) <= 0 ? 1.0 : -1.0;
   reported_.push_back({"apex", apex});
@@ -161,14 +161,24 @@ double DamageProbe::axial_distance(int n) const {
 // alpha^1.5, the contact radius a = (3 F R / (4 E*))^(1/3) = (F R^1.5 / k)^(1/3) and the pressure
 // p0 sqrt(1 - r^2 / a^2), p0 = 3 F / (2 pi a^2). Where the shell model's own contact patch is
 // wider (a conforming contact, several nodes pressed) its radius is taken, with the same total
-// force and shape: what the mesh resolves is kept, what it cannot is Hertz's.
+// force and shape: what the mesh resolves is kept, what it cannot is Hertz's. The patch's radius
+// is measured by the nodal forces' second moment, which for Hertz's pressure is <r^2> = (2/5)
+// a^2: it grows continuously from 0 as a ring of nodes starts to bear (the farthest pressed node
+// would jump to the ring's radius, the element size, at its first touch).
 std::vector<double> DamageProbe::hertz_pressures(const ProbePoint& point) const {
   std::vector<double> p(monitored_.size(), 0.0);
   if (!(point.force > 0)) return p;
-  double a = std::cbrt(point.force * std::pow(face_law_.radius, 1.5) / face_law_.k);
-  for (std::size_t i = 0; i < point.candidates.size(); ++i)
-    if (point.pressures[static_cast<Eigen::Index>(i)] > 0)
-      a = std::max(a, axial_distance(point.candidates[i]));
+  double moment = 0, total = 0;
+  for (std::size_t i = 0; i < point.candidates.size(); ++i) {
+    const double f = point.forces[static_cast<Eigen::Index>(i)];
+    if (!(f > 0)) continue;
+    const double r = axial_distance(point.candidates[i]);
+    moment += f * r * r;
+    total += f;
+  }
+  const double a_patch = total > 0 ? std::sqrt(2.5 * moment / total) : 0.0;
+  const double a =
+      std::max(std::cbrt(point.force * std::pow(face_law_.radius, 1.5) / face_law_.k), a_patch);
   const double p0 = 3 * point.force / (2 * kPi * a * a);
   for (std::size_t k = 0; k < monitored_.size(); ++k) {
     const double r = axial_distance(monitored_[k]);

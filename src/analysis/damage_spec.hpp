@@ -50,8 +50,9 @@ struct DamageSpec {
   // The strains' patch fit at a node takes every node within this distance (mm), and at least
   // the 25 nearest: shell resultants near a concentrated load mean something on the scale of
   // the thickness, and a fit over a fixed length converges with the mesh where one over a fixed
-  // number of nodes follows the load's singularity. Negative: the laminate's thickness; 0: the
-  // 25 nearest nodes only.
+  // number of nodes follows the load's singularity. Negative: twice the laminate's thickness
+  // (the smallest multiple with which every criterion's onset on the paper's cap converges,
+  // docs/theory/failure.md 7); 0: the 25 nearest nodes only.
   double patch_radius = -1;
   // Nodes monitored: those within `radius` mm of the apex's line of travel; 0 = the contact
   // candidates (the nodes the indenter can reach within the path), the apex and the points.

@@ -227,13 +227,13 @@ void IndentationProblem::probe(const cont::Vector& z, const std::vector<NodeStat
   const int first = contact_->first();
   const int given = std::min(static_cast<int>(z.size()) - first - layout().local, contact_->size());
   Eigen::VectorXd pressures = Eigen::VectorXd::Zero(contact_->size());
-  double force = 0;
+  Eigen::VectorXd forces = Eigen::VectorXd::Zero(contact_->size());
   for (int i = 0; i < given; ++i) {
-    pressures[i] = z[first + i] / contact_->pressure_area_of(i);
-    force += z[first + i];
+    forces[i] = z[first + i];
+    pressures[i] = forces[i] / contact_->pressure_area_of(i);
   }
-  const double whole_shell = model_.symmetry_factor * force;
-  probe_->measure(ProbePoint{s, contact_->candidates(), pressures, whole_shell}, out);
+  const double whole_shell = model_.symmetry_factor * forces.sum();
+  probe_->measure(ProbePoint{s, contact_->candidates(), pressures, forces, whole_shell}, out);
 }
 
 void IndentationProblem::set_probe(std::shared_ptr<const StateProbe> probe) {

@@ -17,6 +17,7 @@ struct ProbePoint {
   const std::vector<NodeState>& states;  // every mesh node
   const std::vector<int>& candidates;    // mesh nodes of the contact candidates
   const Eigen::VectorXd& pressures;      // contact pressure per candidate, MPa (>= 0 in contact)
+  const Eigen::VectorXd& forces;         // contact force (multiplier) per candidate, N
   double force;                          // the indenter's contact force, whole shell, N
 };
 

@@ -12,7 +12,10 @@ std::vector<NodeDamage> evaluate_at(const IndentationSetup& setup, const Indenta
   const std::vector<NodeState> states = setup.problem->node_states(z);
   const Eigen::VectorXd pressures = Eigen::Map<const Eigen::VectorXd>(
       state.pressures.data(), static_cast<Eigen::Index>(state.pressures.size()));
-  return setup.damage->evaluate(ProbePoint{states, state.nodes, pressures, state.force}, nodes);
+  const Eigen::VectorXd forces = Eigen::Map<const Eigen::VectorXd>(
+      state.multipliers.data(), static_cast<Eigen::Index>(state.multipliers.size()));
+  return setup.damage->evaluate(ProbePoint{states, state.nodes, pressures, forces, state.force},
+                                nodes);
 }
 
 std::string criterion_text(Criterion c) {

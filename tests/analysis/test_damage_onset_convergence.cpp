@@ -7,18 +7,17 @@
 // 25 nearest nodes the onsets did not converge: the maximum-stress onset sat at F = Z_C
 // size_apex^2 and halved with each refinement (docs/theory/failure.md 7). The recovery now reads
 // Hertz's pressure of the indenter's force (the laminate's anisotropic half-space sizing the
-// contact radius) and fits the strains over the thickness around each node. Checked here:
+// contact radius) and fits the strains over twice the thickness around each node. Checked here:
 //  * the maximum-stress onset is the contacted face's compression at Hertz's closed form
 //    F = pi^3 R^2 Z_C^3 / (6 E*^2) on every mesh (no mesh size enters it);
-//  * the Tsai-Wu and Hashin onsets (matrix compression of the contacted ply) converge: the
-//    differences between successive meshes shrink, and the finest mesh lies within 3 % of the
-//    Richardson limit of the three (the tolerance stated in docs/theory/failure.md 7; the
-//    measured errors are printed);
-//  * the quadratic delamination onset does NOT converge yet (3141, 2983, 2731 N: the differences
-//    grow), printed but not asserted: the interlaminar stresses come from the third derivatives
-//    of the fitted strains under a shell that is still point-loaded (docs/theory/failure.md 7).
+//  * the Tsai-Wu, Hashin and delamination onset forces of the three meshes lie within 2 % of the
+//    finest mesh's (the tolerance stated in docs/theory/failure.md 7; measured 0.1, 0.1 and
+//    0.8 %). Their differences are at that level and change sign, so no Richardson limit is
+//    formed (with a patch of one thickness the delamination onset did not converge: 3141, 2983,
+//    2731 N).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -84,23 +83,18 @@ TEST(DamageOnsetConvergence, PaperCapOnsetsConvergeWithTheResolvedFacePressure) 
     const double hertz = pi * pi * pi * R * R * Z_C * Z_C * Z_C / (6 * E * E);
     EXPECT_NEAR(o.force, hertz, 1e-6 * hertz) << size << " mm mesh";
   }
-  for (Criterion c : {Criterion::kTsaiWu, Criterion::kHashin}) {
+  for (Criterion c : {Criterion::kTsaiWu, Criterion::kHashin, Criterion::kQuadraticDelamination}) {
     std::vector<double> f;
     for (const MeshRun& m : runs) {
       ASSERT_TRUE(m.onsets.count(c))
           << criterion_name(c) << " on the " << m.size_apex << " mm mesh";
       f.push_back(m.onsets.at(c).force);
     }
-    const double d1 = f[1] - f[0], d2 = f[2] - f[1];
-    EXPECT_LT(std::abs(d2), std::abs(d1)) << criterion_name(c) << ": the differences must shrink";
-    // Richardson from three meshes (monotone: d2 / d1 in (0, 1)); the finest mesh's error.
-    const double ratio = d2 / d1;
-    ASSERT_GT(ratio, 0.0) << criterion_name(c) << ": not monotone";
-    const double limit = f[2] + d2 * ratio / (1 - ratio);
-    const double error = std::abs(f[2] - limit) / std::abs(limit);
-    std::printf("%s: Richardson limit %.1f N, finest mesh %.2f %% off (ratio %.2f)\n",
-                criterion_name(c), limit, 100 * error, ratio);
-    EXPECT_LT(error, 0.03) << criterion_name(c);
+    double spread = 0;
+    for (double v : f) spread = std::max(spread, std::abs(v - f.back()) / f.back());
+    std::printf("%s: largest difference from the finest mesh %.2f %%\n", criterion_name(c),
+                100 * spread);
+    EXPECT_LT(spread, 0.02) << criterion_name(c);
   }
 }
 
