@@ -147,13 +147,15 @@ std::vector<ColumnSpec> make_columns() {
   for (int i = 0; i < 6; ++i)
     c.push_back({static_cast<PathColumn>(static_cast<int>(PathColumn::kK11ContactMin) + i),
                  names[i], "1/mm", descriptions[i], value[i], nullptr, restore[i]});
-  c.push_back({PathColumn::kErrorEstimate, "error_estimate", "-",
-               "estimated relative discretisation error of the point in the energy norm "
-               "(Zienkiewicz-Zhu recovery of the shell's generalised strains over the whole mesh, "
-               "docs/theory/discretisation-error.md); the force and energy errors of a depth path "
-               "are of the order of its square. Compare with `mesh.tolerance`",
-               [](const S& s) { return s.error_estimate; }, nullptr,
-               [](PathPoint& p, double v) { p.state.error_estimate = v; }});
+  c.push_back(
+      {PathColumn::kErrorEstimate, "error_estimate", "-",
+       "estimated relative discretisation error of the point in the energy norm "
+       "(Zienkiewicz-Zhu recovery of the shell's generalised strains over the whole mesh, "
+       "docs/theory/discretisation-error.md): how good the strain field is; it does not bound "
+       "the force's error at a contact (the force converges faster). Compare with "
+       "`mesh.tolerance`",
+       [](const S& s) { return s.error_estimate; }, nullptr,
+       [](PathPoint& p, double v) { p.state.error_estimate = v; }});
   // The failure indices (analysis/damage_probe.hpp): the largest over the monitored nodes.
   const std::string index =
       " over the monitored nodes near the indenter (bottom, middle and top of every ply; "
