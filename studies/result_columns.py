@@ -30,6 +30,7 @@ K12_CONTACT_MAX_PER_MM = "k12_contact_max_per_mm"
 K22_CONTACT_MIN_PER_MM = "k22_contact_min_per_mm"
 K22_CONTACT_MAX_PER_MM = "k22_contact_max_per_mm"
 ERROR_ESTIMATE = "error_estimate"
+FRAME_FORCE_N = "frame_force_N"
 MAX_STRESS_INDEX = "max_stress_index"
 TSAI_WU_INDEX = "tsai_wu_index"
 HASHIN_INDEX = "hashin_index"
@@ -65,6 +66,7 @@ PATH_COLUMNS = (
     K22_CONTACT_MIN_PER_MM,
     K22_CONTACT_MAX_PER_MM,
     ERROR_ESTIMATE,
+    FRAME_FORCE_N,
     MAX_STRESS_INDEX,
     TSAI_WU_INDEX,
     HASHIN_INDEX,
@@ -100,6 +102,7 @@ UNITS = {
     K22_CONTACT_MIN_PER_MM: "1/mm",
     K22_CONTACT_MAX_PER_MM: "1/mm",
     ERROR_ESTIMATE: "-",
+    FRAME_FORCE_N: "N",
     MAX_STRESS_INDEX: "-",
     TSAI_WU_INDEX: "-",
     HASHIN_INDEX: "-",

@@ -156,6 +156,12 @@ std::vector<ColumnSpec> make_columns() {
        "`mesh.tolerance`",
        [](const S& s) { return s.error_estimate; }, nullptr,
        [](PathPoint& p, double v) { p.state.error_estimate = v; }});
+  c.push_back({PathColumn::kFrameForce, "frame_force_N", "N",
+               "force the support frame of a `fixture` carries along its normal (whole plate; "
+               "part of reaction_N, with the clamps' reactions making up the rest); 0 without "
+               "a fixture",
+               [](const S& s) { return s.frame_force; }, nullptr,
+               [](PathPoint& p, double v) { p.state.frame_force = v; }});
   // The failure indices (analysis/damage_probe.hpp): the largest over the monitored nodes.
   const std::string index =
       " over the monitored nodes near the indenter (bottom, middle and top of every ply; "

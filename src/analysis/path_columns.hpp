@@ -44,6 +44,7 @@ enum class PathColumn {
   kK22ContactMin,
   kK22ContactMax,
   kErrorEstimate,
+  kFrameForce,
   // The failure indices (damage/failure_index.hpp), only in runs whose case monitors the
   // criterion (docs/case-file.md `damage.criteria`).
   kMaxStressIndex,

@@ -16,6 +16,7 @@
 
 #include "../model/msh_test_writer.hpp"
 #include "analysis/indentation_run.hpp"
+#include "analysis/path_columns.hpp"
 #include "indentation_test_support.hpp"
 
 namespace si {
@@ -237,6 +238,8 @@ TEST(SupportFrame, D6264Backed_HertzLaw_ForceBalance_ReactionsUnderTheIndenterOn
   const IndentationState& s = r.points.back().state;
   expect_frame_kkt(s);
   EXPECT_NEAR(s.frame_force, s.force, 1e-7 * s.force);  // no clamps: the frame holds it alone
+  // path.csv's frame_force_N is the state's.
+  EXPECT_EQ(column_value(path_column(PathColumn::kFrameForce), r.points.back()), s.frame_force);
   const ShellModel m = build_shell_model(c);
   for (std::size_t i = 0; i < s.frame_nodes.size(); ++i) {
     if (s.frame_multipliers[i] > 1e-6 * s.force) {

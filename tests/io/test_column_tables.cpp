@@ -93,7 +93,7 @@ TEST(PathColumns, NamesAreUniqueAndEveryColumnIsComputedAndRestored) {
 // run without either has exactly the others.
 TEST(PathColumns, OptionalColumnsOnlyInRunsThatAskForThem) {
   const std::vector<PathColumn>& base = base_columns();
-  EXPECT_EQ(base.back(), PathColumn::kErrorEstimate);
+  EXPECT_EQ(base.back(), PathColumn::kFrameForce);
   EXPECT_EQ(base.size() + 6, path_columns().size());
   const std::vector<PathColumn> run =
       run_columns({Criterion::kQuadraticDelamination, Criterion::kHashin});
