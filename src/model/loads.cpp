@@ -78,6 +78,10 @@ bool Loads::has_follower() const {
   return false;
 }
 
+bool is_drilling(const Vector3d& moment, const Vector3d& director) {
+  return std::abs(moment.dot(director)) > 1e-12 * moment.norm();
+}
+
 void validate(const Mesh& mesh, const Loads& loads) {
   for (std::size_t i = 0; i < loads.points.size(); ++i) {
     const std::string who = "point load " + std::to_string(i);
@@ -105,7 +109,7 @@ void validate(const Mesh& mesh, const Loads& loads) {
     if (nodes.empty()) throw_input(who + ": node set '" + m.node_set + "' is empty");
     if (!finite(m.moment)) throw_input(who + ": moment is not finite");
     for (int n : nodes)
-      if (std::abs(m.moment.dot(mesh.directors[n])) > 1e-12 * m.moment.norm())
+      if (is_drilling(m.moment, mesh.directors[n]))
         throw_input(who + ": the moment has a component along the director of node " +
                     std::to_string(n) + " (drilling), which the 5-dof nodes cannot carry");
   }

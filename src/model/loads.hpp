@@ -67,6 +67,10 @@ struct Loads {
   bool has_follower() const;
 };
 
+// True when `moment` has a component along `director` (|M . D| > 1e-12 |M|): a drilling
+// moment, which the 5-dof nodes cannot carry (NodalMoment).
+bool is_drilling(const Vector3d& moment, const Vector3d& director);
+
 // Throws an input error for unknown node sets, nodes or elements out of range, a line load with
 // fewer than 2 nodes or a zero-length segment, a nodal moment with a component along a node's
 // director (|M . D| > 1e-12 |M|), or a non-finite value.

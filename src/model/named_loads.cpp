@@ -1,7 +1,6 @@
 #include "model/named_loads.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 #include <set>
 #include <utility>
@@ -33,7 +32,7 @@ int nearest_node(const Mesh& mesh, const Vector3d& at) {
 // loads.hpp NodalMoment: a moment acts on the two rotation dofs only; a drilling component (along
 // the node's director) would be dropped silently, so it is refused here, naming the entry.
 void check_no_drilling(const Mesh& mesh, const Vector3d& moment, int node, const Where& where) {
-  if (std::abs(moment.dot(mesh.directors[node])) > 1e-12 * moment.norm())
+  if (is_drilling(moment, mesh.directors[node]))
     throw_input("the moment has a component along the shell normal at node " +
                     std::to_string(node) +
                     " (a drilling moment, which the shell has no rotation to take); give only "
