@@ -2,23 +2,34 @@
 
 namespace si {
 
-Eigen::MatrixXd nodal_strains(const Mesh& mesh, const Assembler& assembler,
-                              const ShellElement& element, const std::vector<NodeState>& state) {
+std::vector<ElementStrains> element_strains(const Mesh& mesh, const Assembler& assembler,
+                                            const ShellElement& element,
+                                            const std::vector<NodeState>& state) {
+  std::vector<ElementStrains> out(static_cast<std::size_t>(mesh.num_elements()));
+  for (int e = 0; e < mesh.num_elements(); ++e)
+    out[e] = element.strains_at_nodes(assembler.geometry(e), assembler.element_states(state, e),
+                                      assembler.kinematics());
+  return out;
+}
+
+Eigen::MatrixXd average_at_nodes(const Mesh& mesh, const std::vector<ElementStrains>& strains) {
   Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(mesh.num_nodes(), 8);
   Eigen::VectorXd count = Eigen::VectorXd::Zero(mesh.num_nodes());
-  for (int e = 0; e < mesh.num_elements(); ++e) {
-    const ElementStrains s = element.strains_at_nodes(
-        assembler.geometry(e), assembler.element_states(state, e), assembler.kinematics());
+  for (int e = 0; e < mesh.num_elements(); ++e)
     for (int a = 0; a < 4; ++a) {
       const int n = mesh.elements[e][a];
-      sum.row(n).head<6>() += s.R[a].transpose();
-      sum.row(n).tail<2>() += s.gamma[a].transpose();
+      sum.row(n).head<6>() += strains[e].R[a].transpose();
+      sum.row(n).tail<2>() += strains[e].gamma[a].transpose();
       count[n] += 1;
     }
-  }
   for (int n = 0; n < mesh.num_nodes(); ++n)
     if (count[n] > 0) sum.row(n) /= count[n];
   return sum;
+}
+
+Eigen::MatrixXd nodal_strains(const Mesh& mesh, const Assembler& assembler,
+                              const ShellElement& element, const std::vector<NodeState>& state) {
+  return average_at_nodes(mesh, element_strains(mesh, assembler, element, state));
 }
 
 Eigen::Matrix<double, 1, 8> nodal_strain_at(const Mesh& mesh, const Assembler& assembler,

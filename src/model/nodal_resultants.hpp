@@ -24,6 +24,14 @@ namespace si {
 Eigen::MatrixXd nodal_strains(const Mesh& mesh, const Assembler& assembler,
                               const ShellElement& element, const std::vector<NodeState>& state);
 
+// The two steps of nodal_strains, for a caller that also needs each element's own values (the
+// recovery error estimate, recovery_error.hpp): every element's strains at its nodes, and their
+// average at the nodes (one row per node, the order above).
+std::vector<ElementStrains> element_strains(const Mesh& mesh, const Assembler& assembler,
+                                            const ShellElement& element,
+                                            const std::vector<NodeState>& state);
+Eigen::MatrixXd average_at_nodes(const Mesh& mesh, const std::vector<ElementStrains>& strains);
+
 // The same average at one node over `elements`, the elements that contain it (cheaper when only
 // a few nodes are wanted, e.g. the apex curvature along a path).
 Eigen::Matrix<double, 1, 8> nodal_strain_at(const Mesh& mesh, const Assembler& assembler,

@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "model/nodal_resultants.hpp"
+#include "shell/shape4.hpp"
+
 namespace si {
 namespace {
 
@@ -29,40 +32,26 @@ double RecoveryError::relative() const {
 RecoveryError recovery_error(const Mesh& mesh, const Assembler& assembler,
                              const ShellElement& element, const ShellLaw& law,
                              const std::vector<NodeState>& state) {
-  const int elements = mesh.num_elements();
-  std::vector<ElementStrains> strains(static_cast<std::size_t>(elements));
-  Eigen::MatrixXd recovered = Eigen::MatrixXd::Zero(8, mesh.num_nodes());
-  Eigen::VectorXd count = Eigen::VectorXd::Zero(mesh.num_nodes());
-  for (int e = 0; e < elements; ++e) {
-    strains[e] = element.strains_at_nodes(assembler.geometry(e), assembler.element_states(state, e),
-                                          assembler.kinematics());
-    for (int a = 0; a < 4; ++a) {
-      recovered.col(mesh.elements[e][a]) += stacked(strains[e], a);
-      count[mesh.elements[e][a]] += 1;
-    }
-  }
-  for (int n = 0; n < mesh.num_nodes(); ++n)
-    if (count[n] > 0) recovered.col(n) /= count[n];
-
-  // 2x2 Gauss points (weights 1) of the bilinear element, nodes counter-clockwise from (-1,-1).
+  const std::vector<ElementStrains> strains = element_strains(mesh, assembler, element, state);
+  const Eigen::MatrixXd recovered = average_at_nodes(mesh, strains);
+  // The element's 2x2 Gauss points (weights 1), where e_h is the Gauss value itself.
   const double g = 1 / std::sqrt(3.0);
-  const double xi[4] = {-1, 1, 1, -1}, eta[4] = {-1, -1, 1, 1};
   RecoveryError out;
-  for (int e = 0; e < elements; ++e) {
+  for (int e = 0; e < mesh.num_elements(); ++e) {
     const ElementGeometry& geo = assembler.geometry(e);
     for (int q = 0; q < 4; ++q) {
-      const double s = g * xi[q], t = g * eta[q];
-      Vector3d x_s = Vector3d::Zero(), x_t = Vector3d::Zero();
+      const Shape4 shape =
+          evaluate_shape4(ShapeSet::kBilinear, g * kCornerXi[q], g * kCornerEta[q]);
+      Vector3d x_xi = Vector3d::Zero(), x_eta = Vector3d::Zero();
       Strain8 difference = Strain8::Zero(), own = Strain8::Zero();
       for (int a = 0; a < 4; ++a) {
-        const double N = 0.25 * (1 + xi[a] * s) * (1 + eta[a] * t);
-        x_s += 0.25 * xi[a] * (1 + eta[a] * t) * geo.X[a];
-        x_t += 0.25 * eta[a] * (1 + xi[a] * s) * geo.X[a];
+        x_xi += shape.N_xi[a] * geo.X[a];
+        x_eta += shape.N_eta[a] * geo.X[a];
         const Strain8 e_h = stacked(strains[e], a);
-        own += N * e_h;
-        difference += N * (recovered.col(mesh.elements[e][a]) - e_h);
+        own += shape.N[a] * e_h;
+        difference += shape.N[a] * (recovered.row(mesh.elements[e][a]).transpose() - e_h);
       }
-      const double J = x_s.cross(x_t).norm();
+      const double J = x_xi.cross(x_eta).norm();
       out.error_norm2 += J * energy_density(difference, law);
       out.solution_norm2 += J * energy_density(own, law);
     }
