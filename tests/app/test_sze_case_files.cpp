@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "../verification/sze_roof_tables.hpp"
+#include "../verification/sze_tables.hpp"
 #include "../verification_record.hpp"
 #include "cli_test_support.hpp"
 #include "io/csv_table.hpp"
@@ -107,17 +107,13 @@ std::vector<double> twentieths() {
 // 0.05, ..., 1; acceptance 1.5 % with a floor of 0.002 (two units of the table's last digit), as
 // SzeLiuLo2004_CantileverEndShear_Mitc4_16x1. Mesh 16 x 2 (the plate generator's even count).
 TEST(SzeCaseFiles, CantileverEndShear_SzeLiuLo2004Sec31_S4RTable) {
-  const std::vector<double> minus_u = {0.026, 0.103, 0.224, 0.381, 0.563, 0.763, 0.971,
-                                       1.184, 1.396, 1.604, 1.807, 2.002, 2.190, 2.370,
-                                       2.541, 2.705, 2.861, 3.010, 3.151, 3.286};
-  const std::vector<double> w = {0.663, 1.309, 1.922, 2.493, 3.015, 3.488, 3.912,
-                                 4.292, 4.631, 4.933, 5.202, 5.444, 5.660, 5.855,
-                                 6.031, 6.190, 6.335, 6.467, 6.588, 6.698};
   const fs::path out = run_sze_case("sze_3-1_cantilever_end_shear.yaml", "sze_31");
   const CsvTable t = read_csv_table((out / "static.csv").string());
   const char* source = "Sze, Liu & Lo 2004 sec. 3.1, ABAQUS S4R 16x1 (csv/sze2004_3-1_*)";
-  expect_column("3.1, 16x2", source, t, "x+_ux_mm", -1, twentieths(), minus_u, 0.015, 0.002);
-  expect_column("3.1, 16x2", source, t, "x+_uz_mm", 1, twentieths(), w, 0.015, 0.002);
+  expect_column("3.1, 16x2", source, t, "x+_ux_mm", -1, twentieths(), verification::kSze31MinusU,
+                0.015, 0.002);
+  expect_column("3.1, 16x2", source, t, "x+_uz_mm", 1, twentieths(), verification::kSze31W, 0.015,
+                0.002);
 }
 
 // Sec. 3.2: the strip rolled into a full circle by an end moment (a moment per length along the
@@ -129,8 +125,8 @@ TEST(SzeCaseFiles, CantileverEndMoment_SzeLiuLo2004Sec32_ExactElastica) {
   std::vector<double> minus_u, w;
   for (double f : twentieths()) {
     const double theta = 2 * pi * f;
-    minus_u.push_back(L * (1 - std::sin(theta) / theta));
-    w.push_back(L * (1 - std::cos(theta)) / theta);
+    minus_u.push_back(verification::elastica_minus_u(L, theta));
+    w.push_back(verification::elastica_w(L, theta));
   }
   const fs::path out = run_sze_case("sze_3-2_cantilever_end_moment.yaml", "sze_32");
   const CsvTable t = read_csv_table((out / "static.csv").string());
@@ -144,14 +140,15 @@ TEST(SzeCaseFiles, CantileverEndMoment_SzeLiuLo2004Sec32_ExactElastica) {
 // W_B (17.528) at the outer corner B (nonlinear.md's label caution). Acceptance 2 %, as
 // SzeLiuLo2004_SlitAnnularPlate_Mitc4_6x80 (E and q scaled alike in the case: same W).
 void check_slit_plate(const fs::path& out, const std::string& label) {
-  const std::vector<double> factors = {0.05, 0.10, 0.15, 0.20, 0.25, 0.30, 0.35, 0.40, 0.45, 0.50,
-                                       0.55, 0.60, 0.65, 0.70, 0.75, 0.80, 0.85, 0.90, 0.95, 1.00};
-  const std::vector<double> w_inner = {2.455,  4.277,  5.649,  6.725,  7.602,  8.340,  8.974,
-                                       9.529,  10.023, 10.468, 10.876, 11.257, 11.620, 11.970,
-                                       12.310, 12.642, 12.966, 13.282, 13.590, 13.891};
-  const std::vector<double> w_outer = {3.370,  5.876,  7.736,  9.160,  10.288, 11.213, 11.992,
-                                       12.661, 13.247, 13.768, 14.240, 14.674, 15.081, 15.469,
-                                       15.842, 16.202, 16.550, 16.886, 17.212, 17.528};
+  // The table's levels that are steps of the 20-step run (every other one up to 0.15).
+  std::vector<double> factors, w_inner, w_outer;
+  for (std::size_t i = 0; i < verification::kSze33LoadFactors.size(); ++i) {
+    const double f = verification::kSze33LoadFactors[i];
+    if (std::abs(20 * f - std::round(20 * f)) > 1e-9) continue;
+    factors.push_back(f);
+    w_inner.push_back(verification::kSze33WInner[i]);
+    w_outer.push_back(verification::kSze33WOuter[i]);
+  }
   const CsvTable t = read_csv_table((out / "static.csv").string());
   const char* source = "Sze, Liu & Lo 2004 sec. 3.3, ABAQUS S4R 10x80 (csv/sze2004_3-3_*)";
   expect_column(label, source, t, "A_uz_mm", 1, factors, w_inner, 0.02, 0);

@@ -13,6 +13,7 @@
 
 #include "model/plate_meshes.hpp"
 #include "nonlinear_benchmark_support.hpp"
+#include "sze_tables.hpp"
 
 namespace si {
 namespace {
@@ -20,6 +21,11 @@ namespace {
 using verification::BenchmarkRun;
 using verification::CantileverStrip;
 using verification::Column;
+using verification::kSze31MinusU;
+using verification::kSze31W;
+using verification::kSze33LoadFactors;
+using verification::kSze33WInner;
+using verification::kSze33WOuter;
 using verification::mean_displacement;
 using verification::Tolerance;
 
@@ -59,12 +65,7 @@ std::vector<Column> tip_columns(const std::vector<double>& minus_u, const std::v
 
 // Sze, Liu & Lo 2004, sec. 3.1: L = 10, end shear P up to 4 (= 4 EI/L^2) over the free end;
 // reference ABAQUS S4R 16x1. Table (MBDyn sze31_ref.dat), P/Pmax = 0.05, 0.10, ..., 1.00:
-const std::vector<double> kSze31MinusU = {0.026, 0.103, 0.224, 0.381, 0.563, 0.763, 0.971,
-                                          1.184, 1.396, 1.604, 1.807, 2.002, 2.190, 2.370,
-                                          2.541, 2.705, 2.861, 3.010, 3.151, 3.286};
-const std::vector<double> kSze31W = {0.663, 1.309, 1.922, 2.493, 3.015, 3.488, 3.912,
-                                     4.292, 4.631, 4.933, 5.202, 5.444, 5.660, 5.855,
-                                     6.031, 6.190, 6.335, 6.467, 6.588, 6.698};
+// (verification::kSze31MinusU, kSze31W in sze_tables.hpp).
 
 // Acceptance 1.5 % of the reference value, with an absolute floor of 0.002 near zero load: two
 // units of the table's last digit (the table is rounded to 0.001, so -U = 0.026 at P/Pmax =
@@ -100,8 +101,8 @@ TEST(NonlinearShellBenchmarks, SzeLiuLo2004_CantileverEndMoment_ExactElastica_Mi
   std::vector<double> minus_u, w;
   for (double f : twentieths()) {
     const double theta = f * M * L / EI;
-    minus_u.push_back(L * (1 - std::sin(theta) / theta));
-    w.push_back(L * (1 - std::cos(theta)) / theta);
+    minus_u.push_back(verification::elastica_minus_u(L, theta));
+    w.push_back(verification::elastica_w(L, theta));
   }
   verification::expect_path_matches(
       "sze-cantilever-moment", "exact elastica (Sze, Liu & Lo 2004 sec. 3.2)",
@@ -115,15 +116,7 @@ TEST(NonlinearShellBenchmarks, SzeLiuLo2004_CantileverEndMoment_ExactElastica_Mi
 // W_B at the q/qmax below. W_A (13.891 at qmax) is compared with the inner corner of the loaded
 // lip and W_B (17.528) with the outer one (the label caution of nonlinear.md: the outer corner
 // lifts more). Acceptance 2 % of the reference value.
-const std::vector<double> kSze33LoadFactors = {0.025, 0.05, 0.075, 0.10, 0.125, 0.15, 0.20, 0.25,
-                                               0.30,  0.35, 0.40,  0.45, 0.50,  0.55, 0.60, 0.65,
-                                               0.70,  0.75, 0.80,  0.85, 0.90,  0.95, 1.00};
-const std::vector<double> kSze33WInner = {
-    1.305,  2.455,  3.435,  4.277,  5.007,  5.649,  6.725,  7.602,  8.340,  8.974,  9.529, 10.023,
-    10.468, 10.876, 11.257, 11.620, 11.970, 12.310, 12.642, 12.966, 13.282, 13.590, 13.891};
-const std::vector<double> kSze33WOuter = {
-    1.789,  3.370,  4.720,  5.876,  6.872,  7.736,  9.160,  10.288, 11.213, 11.992, 12.661, 13.247,
-    13.768, 14.240, 14.674, 15.081, 15.469, 15.842, 16.202, 16.550, 16.886, 17.212, 17.528};
+// (verification::kSze33LoadFactors, kSze33WInner, kSze33WOuter in sze_tables.hpp).
 
 // Runs the slit plate in `steps` equal load steps and checks the tabulated levels that are load
 // steps. Newton tolerance 1e-5 (not the default 1e-8): on this thin plate the free-dof residual

@@ -31,7 +31,7 @@
 #include "shell/shell_element.hpp"
 #include "shell/shell_law.hpp"
 #include "sze_roof_support.hpp"
-#include "sze_roof_tables.hpp"
+#include "sze_tables.hpp"
 
 namespace si {
 namespace {
