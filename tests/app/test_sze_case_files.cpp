@@ -45,6 +45,8 @@ fs::path run_sze_case(const std::string& file, const std::string& name) {
   const auto r = run_cli("static '" + std::string(SHELLINDENT_SOURCE_DIR) + "/studies/sze/" + file +
                          "' --out '" + out.string() + "'");
   EXPECT_EQ(r.exit_code, 0) << r.output;
+  // The equilibrium check stays silent on a balanced run (and with no force along z at all).
+  EXPECT_EQ(r.output.find("do not balance"), std::string::npos) << r.output;
   return out;
 }
 
