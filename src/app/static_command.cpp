@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/static_run.hpp"
+#include "app/interrupt_signals.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "io/case_file.hpp"
@@ -283,6 +284,8 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
 
   std::vector<StaticRow> rows;
   std::vector<NodeState> last_state;
+  // Ctrl-C / SIGTERM stop the run after the step under way; every converged step is written.
+  const InterruptGuard guard;
   const auto on_step = [&](const StepResult& r, const std::vector<NodeState>& s) {
     rows.push_back(make_row(r, m.symmetry_factor, sets));
     last_state = s;
@@ -299,7 +302,7 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
     if (row.force != 0 && std::abs(row.reaction - row.force) > 1e-6 * std::abs(row.force))
       err << "shellindent: warning: reactions " << row.reaction << " N do not balance the applied "
           << row.force << " N: the results are not in equilibrium\n";
-    return true;
+    return !interrupted();
   };
   StaticResult result;
   try {
@@ -314,7 +317,10 @@ int run_static_command(const StaticCommandOptions& o, std::ostream& out, std::os
         Error(e.kind(), e.reason(), w).within(Where{c.file, "mesh.element", m.element->name(), 0}),
         text);
   }
-  const std::string& failure = result.failure;
+  // The run's callback is how a signal stops it: say so in the user's terms.
+  const std::string failure = interrupted() && result.failure.empty()
+                                  ? std::string("interrupted (") + interrupt_name() + ")"
+                                  : result.failure;
   std::vector<StaticEventRow> events;
   for (const StaticEvent& e : result.events)
     events.push_back({e.type, make_row(e.at, m.symmetry_factor, sets), e.criticality,
