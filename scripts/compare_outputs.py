@@ -117,9 +117,11 @@ NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|nan|inf")
 DURATION = re.compile(r"\b\d+(?:\.\d+)?(?:e[-+]?\d+)? ?(?:s|ms|min)\b")
 DATE = re.compile(r"\d{4}-\d{2}-\d{2}[ T]\d{2}:\d{2}(?::\d{2}(?:\.\d+)?)?(?: UTC)?")
 LOAD = re.compile(r"(load(?: average)?:?|end of this script:) \d+(?:\.\d+)?(?:, \d+(?:\.\d+)?)*")
-# Timings, and the last lines of a parallel sweep's log (which case ends last varies).
+# Timings, the last lines of a parallel sweep's log (which case ends last varies), and the build
+# record of path.json (two builds compared differ in their source fingerprint by definition).
 VOLATILE_KEY = re.compile(
-    r"(^|_)(wall|cpu|seconds|elapsed)(_|$)|load_average|measured|^time|stderr_tail")
+    r"(^|_)(wall|cpu|seconds|elapsed)(_|$)|load_average|measured|^time|stderr_tail"
+    r"|source_fingerprint")
 PROGRESS = re.compile(r"(sweep:) \d+/")
 # The lines that say which test binary runs (the verification runs one or three).
 BINARY_BANNERS = ("Running main() from", "running: ")

@@ -29,7 +29,7 @@ void bind_case(py::module_& m);
 void bind_run(py::module_& m);
 // section: the section properties of a case's laminate (CLT ABD, VAM A_R, shear stiffness).
 void bind_section(py::module_& m);
-// read_study, Study, case_is_done: parameter studies for the Python sweep.
+// read_study, Study, case_state, source_fingerprint: parameter studies for the Python sweep.
 void bind_study(py::module_& m);
 // fit_curve: the curve fits of fitting/ (power law, Hertz, power law with offset).
 void bind_fit(py::module_& m);

@@ -5,6 +5,7 @@
 
 #include "bindings.hpp"
 #include "io/path_results.hpp"
+#include "io/source_fingerprint.hpp"
 #include "io/sweep_table.hpp"
 
 namespace si::py {
@@ -65,9 +66,15 @@ void bind_study(py::module_& m) {
       },
       py::arg("path"), py::arg("quick") = false);
   m.def(
-      "case_is_done",
-      [](const std::string& dir, const std::string& yaml) { return case_is_done(dir, yaml); },
-      py::arg("dir"), py::arg("yaml"));
+      "case_state",
+      [](const std::string& dir, const std::string& yaml) {
+        return std::string(case_state_name(case_state(dir, yaml)));
+      },
+      py::arg("dir"), py::arg("yaml"),
+      "'done' (skip), 'stale' (another build wrote its results: run again) or 'to_run'");
+  m.def(
+      "source_fingerprint", [] { return std::string(source_fingerprint()); },
+      "SHA-256 of the sources and build settings of this module (path.json's build record)");
 }
 
 }  // namespace si::py

@@ -83,9 +83,14 @@ def sweep(study, client=None, out=None, quick=False, workers=2, log=sys.stderr):
     dirs = [os.path.join(root, "cases", c["slug"]) for c in cases]
     todo = []
     for c, d in zip(cases, dirs):
-        if _core.case_is_done(d, c["yaml"]):
+        state = _core.case_state(d, c["yaml"])
+        if state == "done":
             print(f"sweep: {c['label']}: already done, skipped", file=log)
             continue
+        if state == "stale":
+            print(f"sweep: {c['label']}: its results were written by another build of "
+                  "shellindent (or one that did not record its source fingerprint): run again",
+                  file=log)
         for stale in STALE:
             if os.path.exists(os.path.join(d, stale)):
                 os.remove(os.path.join(d, stale))

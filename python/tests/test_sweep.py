@@ -1,7 +1,9 @@
 """shellindent.sweep on a Dask LocalCluster (2 worker processes on the loopback address) against
 `shellindent sweep -j 2`: the same sweep.csv byte for byte, also when a worker is killed while
-it runs a case (the scheduler resubmits it); a sweep started again submits nothing."""
+it runs a case (the scheduler resubmits it); a sweep started again submits nothing, unless
+another build wrote the case's results."""
 
+import json
 import os
 import shutil
 import subprocess
@@ -10,6 +12,7 @@ import time
 import unittest
 
 import shellindent as si
+from shellindent import _core
 from cases import EXE, OUT, run_cli
 from shellindent.sweep import _local_client
 
@@ -92,6 +95,22 @@ class DaskSweep(unittest.TestCase):
         again = si.sweep(STUDY, out=out, log=Log())
         self.assertEqual(again.csv, self.cli_csv)
         self.assertEqual(sum("already done, skipped" in line for line in log), 4)
+        # The workers' path.json names this module's build; another build's is stale (the sweep
+        # would run the case again), and so is one without the record.
+        case = os.path.join(out, "cases", sorted(os.listdir(os.path.join(out, "cases")))[0])
+        text = read(os.path.join(case, "case.yaml"))
+        doc = json.loads(read(os.path.join(case, "path.json")))
+        self.assertEqual(doc["build"]["source_fingerprint"], _core.source_fingerprint())
+        self.assertEqual(_core.case_state(case, text), "done")
+        for build in ({"source_fingerprint": "0" * 64}, None):
+            if build is None:
+                del doc["build"]
+            else:
+                doc["build"] = build
+            with open(os.path.join(case, "path.json"), "w") as f:
+                json.dump(doc, f)
+            self.assertEqual(_core.case_state(case, text), "stale")
+        self.assertEqual(_core.case_state(case, text + "# another case\n"), "to_run")
 
     def test_a_worker_killed_mid_run_loses_only_its_case(self):
         out = fresh("sweep_dask_killed")

@@ -26,14 +26,21 @@ SweepCases expand_sweep_cases(StudyFile study, bool quick) {
   return s;
 }
 
-bool prepare_case_directory(const fs::path& case_root, const StudyCase& c) {
+CaseState prepare_case_directory(const fs::path& case_root, const StudyCase& c) {
   const fs::path dir = case_root / c.slug;
-  if (case_is_done(dir, c.yaml)) return false;
+  const CaseState state = case_state(dir, c.yaml);
+  if (state == CaseState::kDone) return state;
   for (const char* stale :
        {"path.json", "path.csv", "path_grid.csv", "events.json", "checkpoint.json", "run.log"})
     fs::remove(dir / stale);
   write_file_atomically((dir / "case.yaml").string(), c.yaml);
-  return true;
+  return state;
+}
+
+std::string stale_case_note(const StudyCase& c) {
+  return "sweep: " + c.label +
+         ": its results were written by another build of shellindent (or one that did not record "
+         "its source fingerprint): run again\n";
 }
 
 int write_sweep_tables(const fs::path& root, const SweepCases& s, const nlohmann::json& rows,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/study_file.hpp"
+#include "io/sweep_table.hpp"
 
 namespace si {
 
@@ -28,9 +29,13 @@ SweepCases load_sweep_cases(const std::string& study_file, bool quick);
 SweepCases expand_sweep_cases(StudyFile study, bool quick);
 
 // Makes DIR/<slug> ready for the case to run: removes a previous run's results and log and
-// writes its case.yaml. Returns false (and touches nothing) when the case is done already
-// (io/sweep_table.hpp case_is_done): a sweep started again does not run it again.
-bool prepare_case_directory(const std::filesystem::path& case_root, const StudyCase& c);
+// writes its case.yaml. Returns what it found (io/sweep_table.hpp case_state) and touches nothing
+// when the case is done already: a sweep started again does not run it again. A stale case (its
+// results from another build) is prepared to run again.
+CaseState prepare_case_directory(const std::filesystem::path& case_root, const StudyCase& c);
+
+// The line a sweep prints for a case it runs again because another build wrote its results.
+std::string stale_case_note(const StudyCase& c);
 
 // Writes ROOT/sweep.csv and sweep.json of `rows` (one per case, in order), prints the table to
 // `out` and what was written to `err`; returns 0 when every case finished, else 1, saying that

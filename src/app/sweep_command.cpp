@@ -173,10 +173,13 @@ int run_local_sweep(const SweepCommandOptions& o, std::ostream& out, std::ostrea
   Scheduler scheduler(s.cases, case_root, o.jobs, resolve_executable(o.executable), err);
   std::vector<size_t> todo;
   for (size_t i = 0; i < s.cases.size(); ++i) {
-    if (prepare_case_directory(case_root, s.cases[i]))
-      todo.push_back(i);
-    else
+    const CaseState state = prepare_case_directory(case_root, s.cases[i]);
+    if (state == CaseState::kDone) {
       scheduler.report_skipped(i);
+      continue;
+    }
+    if (state == CaseState::kStale) err << stale_case_note(s.cases[i]);
+    todo.push_back(i);
   }
   scheduler.run(todo);
 

@@ -89,11 +89,13 @@ int emit_sweep_tasks(const SweepCommandOptions& o, std::ostream& out, std::ostre
   const std::string exe = resolve_executable(o.executable);
   std::string tasks;
   std::size_t count = 0;
-  for (const StudyCase& c : s.cases)
-    if (prepare_case_directory(root / "cases", c)) {
-      tasks += task_line(exe, root / "cases" / c.slug) + "\n";
-      ++count;
-    }
+  for (const StudyCase& c : s.cases) {
+    const CaseState state = prepare_case_directory(root / "cases", c);
+    if (state == CaseState::kDone) continue;
+    if (state == CaseState::kStale) err << stale_case_note(c);
+    tasks += task_line(exe, root / "cases" / c.slug) + "\n";
+    ++count;
+  }
   const json record{{"study", o.study_file}, {"study_path", study_path}, {"base", s.study.base},
                     {"quick", o.quick},      {"cases", s.cases.size()},  {"tasks", count},
                     {"executable", exe}};

@@ -7,6 +7,7 @@
 #include "analysis/path_columns.hpp"
 #include "io/critical_points_json.hpp"
 #include "io/damage_json.hpp"
+#include "io/source_fingerprint.hpp"
 #include "io/spellings.hpp"
 
 namespace si {
@@ -207,6 +208,7 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
   }
   nlohmann::json j = {
       {"case", setup.spec.file},
+      {"build", {{"version", SHELLINDENT_VERSION}, {"source_fingerprint", source_fingerprint()}}},
       {"method", run_method_name(result.method)},
       {"element", m.element->name()},
       {"kinematics", spelling(kinematics_spellings(), m.kinematics)},

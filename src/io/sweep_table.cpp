@@ -14,6 +14,7 @@
 #include "io/csv_table.hpp"
 #include "io/damage_summary.hpp"
 #include "io/path_results.hpp"
+#include "io/source_fingerprint.hpp"
 
 namespace si {
 
@@ -148,10 +149,26 @@ bool finished_status(const std::string& status) {
          status == run_status_name(RunStatus::kReachedBound);
 }
 
-bool case_is_done(const fs::path& dir, const std::string& yaml) {
-  if (!fs::is_regular_file(dir / "case.yaml") || read_text(dir / "case.yaml") != yaml) return false;
+CaseState case_state(const fs::path& dir, const std::string& yaml) {
+  if (!fs::is_regular_file(dir / "case.yaml") || read_text(dir / "case.yaml") != yaml)
+    return CaseState::kToRun;
   const std::optional<json> path = read_json_file(dir / "path.json");
-  return path && finished_status(path->value("status", ""));
+  if (!path || !finished_status(path->value("status", ""))) return CaseState::kToRun;
+  const json build = path->value("build", json::object());
+  return build.value("source_fingerprint", "") == source_fingerprint() ? CaseState::kDone
+                                                                       : CaseState::kStale;
+}
+
+const char* case_state_name(CaseState state) {
+  switch (state) {
+    case CaseState::kDone:
+      return "done";
+    case CaseState::kStale:
+      return "stale";
+    case CaseState::kToRun:
+      break;
+  }
+  return "to_run";
 }
 
 std::string last_log_line(const fs::path& dir) {

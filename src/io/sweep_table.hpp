@@ -21,9 +21,13 @@ std::optional<nlohmann::json> read_json_file(const std::filesystem::path& file);
 // The run statuses of a path that reached its end ("completed", "reached_bound").
 bool finished_status(const std::string& status);
 
-// A case is done when its directory holds the same case text (case.yaml) and a finished
-// path.json: a sweep started again does not run it again.
-bool case_is_done(const std::filesystem::path& dir, const std::string& yaml);
+// Where a case of a sweep stands: done when its directory holds the same case text (case.yaml)
+// and a finished path.json written by this build (the same source fingerprint,
+// io/source_fingerprint.hpp); a finished path.json of another build (or of one before the
+// fingerprint was recorded) is stale: the sweep runs the case again and says why.
+enum class CaseState { kToRun, kDone, kStale };
+CaseState case_state(const std::filesystem::path& dir, const std::string& yaml);
+const char* case_state_name(CaseState state);  // "to_run", "done", "stale"
 
 // The last non-empty line of the case's run.log: why a run that wrote no path.json failed.
 std::string last_log_line(const std::filesystem::path& dir);

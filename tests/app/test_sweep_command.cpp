@@ -1,6 +1,7 @@
 // End-to-end tests of `shellindent sweep`: the paper's lay-up study in its quick mode, resuming a
 // sweep whose case lost its results (only that case runs again; the table equals a sequential
-// run's) and bad input refused before anything runs.
+// run's), rerunning the cases whose results another build wrote, and bad input refused before
+// anything runs.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,6 +13,7 @@
 
 #include "cli_test_support.hpp"
 #include "io/csv_table.hpp"
+#include "io/source_fingerprint.hpp"
 #include "test_paths.hpp"
 
 namespace si {
@@ -89,6 +91,64 @@ TEST(SweepCommand, RerunSkipsFinishedCasesAndMatchesASequentialRun) {
   ASSERT_EQ(run_cli(args + "-j 1 --out '" + sequential + "'").exit_code, 0);
   EXPECT_EQ(read_file(fs::path(parallel) / "sweep.csv"),
             read_file(fs::path(sequential) / "sweep.csv"));
+}
+
+// Rewrites the build record of a case's path.json: as if another build (or, with `erase`, one
+// from before the record existed) had written its results.
+void rewrite_build_record(const fs::path& path_json, bool erase) {
+  nlohmann::json j = nlohmann::json::parse(read_file(path_json));
+  if (erase)
+    j.erase("build");
+  else
+    j["build"]["source_fingerprint"] = std::string(64, '0');
+  std::ofstream(path_json) << j.dump(1);
+}
+
+TEST(SweepCommand, RerunRunsAgainTheCasesAnotherBuildWrote) {
+  const fs::path dir = fresh_dir("sweep_stale");
+  const fs::path study = two_case_study(dir);
+  const fs::path out = dir / "out";
+  const std::string args =
+      "sweep '" + study.string() + "' --quick -j 2 --out '" + out.string() + "'";
+  ASSERT_EQ(run_cli(args).exit_code, 0);
+  const fs::path first = out / "cases" / "001_0_0_2S" / "path.json";
+  const fs::path second = out / "cases" / "002_0_90_2S" / "path.json";
+  // The record names this build: the same fingerprint as the library the tests link.
+  const nlohmann::json j = nlohmann::json::parse(read_file(first));
+  EXPECT_EQ(j["build"]["source_fingerprint"].get<std::string>(), source_fingerprint());
+  EXPECT_EQ(j["build"]["source_fingerprint"].get<std::string>().size(), 64u);
+  const std::string csv = read_file(out / "sweep.csv");
+
+  rewrite_build_record(first, false);
+  rewrite_build_record(second, true);
+  const auto again = run_cli(args);
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(count(again.output, "written by another build"), 2) << again.output;
+  EXPECT_EQ(count(again.output, "already done, skipped"), 0) << again.output;
+  for (const fs::path& p : {first, second})  // rerun: the record is this build's again
+    EXPECT_EQ(nlohmann::json::parse(read_file(p))["build"]["source_fingerprint"],
+              source_fingerprint());
+  EXPECT_EQ(read_file(out / "sweep.csv"), csv);  // same code, same table
+
+  // What must not be reported: a third run finds both done by this build and reruns nothing.
+  const auto third = run_cli(args);
+  EXPECT_EQ(count(third.output, "already done, skipped"), 2) << third.output;
+  EXPECT_EQ(count(third.output, "another build"), 0) << third.output;
+
+  // --emit, given the finished cases with one of them stale, lists that one as a task, and only it.
+  const fs::path emitted = dir / "emitted";
+  const std::string emit =
+      "sweep '" + study.string() + "' --quick --emit '" + emitted.string() + "'";
+  ASSERT_EQ(run_cli(emit).exit_code, 0);
+  fs::copy(out / "cases", emitted / "cases",
+           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  rewrite_build_record(emitted / "cases" / "001_0_0_2S" / "path.json", false);
+  const auto again_emitted = run_cli(emit);
+  ASSERT_EQ(again_emitted.exit_code, 0) << again_emitted.output;
+  EXPECT_EQ(count(again_emitted.output, "written by another build"), 1) << again_emitted.output;
+  const std::string tasks = read_file(emitted / "tasks.txt");
+  EXPECT_EQ(count(tasks, "\n"), 1) << tasks;
+  EXPECT_TRUE(contains(tasks, "001_0_0_2S")) << tasks;
 }
 
 TEST(SweepCommand, UnknownKeyIsRefusedBeforeAnythingRuns) {
