@@ -115,13 +115,20 @@ double ArclengthStepper::sigma_of(const State& from, const StepResult& step, con
 }
 
 bool ArclengthStepper::solve_on_segment(const State& from, const StepResult& step, double sigma,
-                                        Vector& x, double& p) {
+                                        const SegmentChord* chord, Vector& x, double& p) {
   const Point& a = from.current.point;
-  const double t = sigma / step.sigma_end;
   ArclengthSystem system(problem_, bordered_, a, step.direction_x, step.direction_p, sigma);
   // Chord predictor first; if the corrector fails from there (e.g. it starts exactly on a
   // singular J), the predictor along the step direction.
-  Vector u = stack(a.x + t * (step.x - a.x), a.p + t * (step.p - a.p));
+  Vector u;
+  if (chord) {
+    const double t = (sigma - chord->sigma_lo) / (chord->sigma_hi - chord->sigma_lo);
+    u = stack(chord->lo.x + t * (chord->hi.x - chord->lo.x),
+              chord->lo.p + t * (chord->hi.p - chord->lo.p));
+  } else {
+    const double t = sigma / step.sigma_end;
+    u = stack(a.x + t * (step.x - a.x), a.p + t * (step.p - a.p));
+  }
   if (!newton_solve(system, u, settings_.newton).converged) {
     u = stack(a.x + sigma * step.direction_x, a.p + sigma * step.direction_p);
     if (!newton_solve(system, u, settings_.newton).converged) return false;

@@ -41,8 +41,8 @@ class ArclengthStepper final : public Stepper {
   StepResult step(const State& from, double ds) override;
   double sigma_of(const State& from, const StepResult& step, const Vector& x,
                   double p) const override;
-  bool solve_on_segment(const State& from, const StepResult& step, double sigma, Vector& x,
-                        double& p) override;
+  bool solve_on_segment(const State& from, const StepResult& step, double sigma,
+                        const SegmentChord* chord, Vector& x, double& p) override;
 
  private:
   // The unit tangent at the current point, or the unit secant from the previous point.

@@ -88,7 +88,7 @@ std::vector<Event> feature_events(const Indicator& ind, const std::vector<std::s
   for (int i = 1; i < parts; ++i) {
     Sample s;
     s.sigma = a.sigma + (b.sigma - a.sigma) * i / parts;
-    s.sign = solve(s.sigma, s.point) ? signed_at(s.point) : 0;
+    s.sign = solve(s.sigma, nullptr, s.point) ? signed_at(s.point) : 0;
     samples.push_back(std::move(s));
   }
   samples.push_back({b.sigma, b.point, sb});

@@ -1,6 +1,9 @@
 #include "continuation/event_location.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace si::cont {
 namespace {
@@ -13,11 +16,12 @@ int sign(double v) {
 // e.g. a bifurcation whose indicator is linear), a point slightly off it towards the bracket's
 // middle, then the middle itself.
 // sigma is set to where the point was found.
-bool solve_near(const SegmentSolver& solve, double& sigma, double middle, TangentPoint& out) {
-  if (solve(sigma, out)) return true;
+bool solve_near(const SegmentSolver& solve, double& sigma, double middle, const SegmentChord* chord,
+                TangentPoint& out) {
+  if (solve(sigma, chord, out)) return true;
   for (const double other : {sigma + 1e-3 * (middle - sigma), middle}) {
     if (other == sigma) continue;
-    if (solve(other, out)) {
+    if (solve(other, chord, out)) {
       sigma = other;
       return true;
     }
@@ -25,50 +29,89 @@ bool solve_near(const SegmentSolver& solve, double& sigma, double middle, Tangen
   return false;
 }
 
+// One end of the bracket: its local coordinate, the indicator's value and the solved point.
+struct Sample {
+  double sigma;
+  double g;
+  TangentPoint point;
+};
+
+// Brent's step from the best end b towards the root (Brent 1973, ch. 4): inverse quadratic
+// interpolation through a (the previous b), b and c (the bracket's other end) when the three values
+// differ, else the secant through a and b; nullopt when the interpolated step is not accepted
+// (it leaves the bracket's inner three quarters, or is more than half the step before last: the
+// interpolation is not converging): then the caller bisects.
+std::optional<double> interpolated_step(const Sample& a, const Sample& b, const Sample& c,
+                                        double half_width, double previous_step, double tolerance) {
+  const double s = b.g / a.g;
+  double p = 0.0, q = 0.0;
+  if (a.sigma == c.sigma) {
+    p = 2.0 * half_width * s;
+    q = 1.0 - s;
+  } else {
+    const double qa = a.g / c.g, r = b.g / c.g;
+    p = s * (2.0 * half_width * qa * (qa - r) - (b.sigma - a.sigma) * (r - 1.0));
+    q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
+  }
+  if (p > 0.0) q = -q;
+  p = std::abs(p);
+  if (2.0 * p <
+      std::min(3.0 * half_width * q - std::abs(tolerance * q), std::abs(previous_step * q)))
+    return p / q;
+  return std::nullopt;
+}
+
 }  // namespace
 
-double locate_root(const std::function<double(const TangentPoint&)>& g, const SegmentPoint& a,
-                   const SegmentPoint& b, const SegmentSolver& solve, const Settings& settings,
-                   TangentPoint& out, bool& located) {
-  struct End {
-    double sigma;
-    double g;       // true value
-    double weight;  // Illinois: the stale end's value is halved
-    TangentPoint point;
+double locate_root(const std::function<double(const TangentPoint&)>& g, const SegmentPoint& lo,
+                   const SegmentPoint& hi, const SegmentSolver& solve, const Settings& settings,
+                   TangentPoint& out, bool& located, double value_tolerance) {
+  // Brent's method: b the best estimate, c the bracket's other end (g(c) of the other sign), a
+  // the previous b; d the last step, e the one before.
+  Sample a{lo.sigma, g(lo.point), lo.point};
+  Sample b{hi.sigma, g(hi.point), hi.point};
+  Sample c = b;
+  double d = b.sigma - a.sigma, e = d;
+  const double tolerance = 0.5 * settings.event_tolerance;
+  const auto small_enough = [value_tolerance](const Sample& x) {
+    return x.g == 0.0 || std::abs(x.g) <= value_tolerance;
   };
-  const double ga = g(a.point);
-  const double gb = g(b.point);
-  End lo{a.sigma, ga, ga, a.point};
-  End hi{b.sigma, gb, gb, b.point};
-  int last_replaced = 0;  // +1: lo, -1: hi (Illinois halves the end kept twice)
-  double width_before = b.sigma - a.sigma;
   for (int it = 0; it < settings.event_max_iterations; ++it) {
-    const double width = hi.sigma - lo.sigma;
-    if (width <= settings.event_tolerance || lo.g == 0.0 || hi.g == 0.0) break;
-    // Regula falsi, with a bisection every third iteration that failed to halve the bracket.
-    double sigma = lo.sigma - lo.weight * width / (hi.weight - lo.weight);
-    if (it % 3 == 2) {
-      if (width > 0.5 * width_before) sigma = 0.5 * (lo.sigma + hi.sigma);
-      width_before = width;
+    if (sign(b.g) == sign(c.g)) {  // the root lies between a and b
+      c = a;
+      d = e = b.sigma - a.sigma;
     }
-    if (!(sigma > lo.sigma && sigma < hi.sigma)) sigma = 0.5 * (lo.sigma + hi.sigma);
+    if (std::abs(c.g) < std::abs(b.g)) {  // b: the end nearer the root
+      a = b;
+      b = c;
+      c = a;
+    }
+    const double half_width = 0.5 * (c.sigma - b.sigma);
+    if (std::abs(half_width) <= tolerance || small_enough(b)) break;
+    const std::optional<double> step = std::abs(e) >= tolerance && std::abs(a.g) > std::abs(b.g)
+                                           ? interpolated_step(a, b, c, half_width, e, tolerance)
+                                           : std::nullopt;
+    e = step ? d : half_width;
+    d = step ? *step : half_width;
+    double sigma = b.sigma + (std::abs(d) > tolerance ? d : std::copysign(tolerance, half_width));
+    const bool b_first = b.sigma < c.sigma;
+    const Sample& left = b_first ? b : c;
+    const Sample& right = b_first ? c : b;
+    const SegmentChord chord{left.sigma, left.point.point, right.sigma, right.point.point};
     TangentPoint trial;
-    if (!solve_near(solve, sigma, 0.5 * (lo.sigma + hi.sigma), trial)) break;
+    if (!solve_near(solve, sigma, b.sigma + half_width, &chord, trial)) break;
     const double value = g(trial);
     if (std::isnan(value)) break;
-    if (sign(value) == sign(lo.g)) {
-      lo = {sigma, value, value, trial};
-      if (last_replaced == 1) hi.weight *= 0.5;
-      last_replaced = 1;
-    } else {
-      hi = {sigma, value, value, trial};
-      if (last_replaced == -1) lo.weight *= 0.5;
-      last_replaced = -1;
-    }
+    a = std::move(b);
+    b = {sigma, value, std::move(trial)};
   }
-  const double width = (lo.g == 0.0 || hi.g == 0.0) ? 0.0 : hi.sigma - lo.sigma;
+  out = b.point;
+  const double width = b.g == 0.0 ? 0.0 : std::abs(c.sigma - b.sigma);
+  if (width > settings.event_tolerance && small_enough(b)) {
+    located = true;
+    return std::min(width, std::abs(b.g) * width / std::abs(c.g - b.g));
+  }
   located = width <= settings.event_tolerance;
-  out = (std::abs(lo.g) < std::abs(hi.g)) ? lo.point : hi.point;
   return width;
 }
 
@@ -78,18 +121,21 @@ double locate_change(const std::function<std::vector<int>(const TangentPoint&)>&
   const std::vector<int> start = value(a.point);
   double lo = a.sigma;
   double hi = b.sigma;
+  TangentPoint lo_point = a.point;
   out = b.point;
   located = false;
   for (int it = 0; it < settings.event_max_iterations; ++it) {
     if (hi - lo <= settings.event_tolerance) break;
     const double mid = 0.5 * (lo + hi);
+    const SegmentChord chord{lo, lo_point.point, hi, out.point};
     TangentPoint trial;
-    if (!solve(mid, trial)) return hi - lo;
+    if (!solve(mid, &chord, trial)) return hi - lo;
     if (value(trial) == start) {
       lo = mid;
+      lo_point = std::move(trial);
     } else {
       hi = mid;
-      out = trial;
+      out = std::move(trial);
     }
   }
   located = hi - lo <= settings.event_tolerance;

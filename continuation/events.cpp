@@ -91,7 +91,7 @@ std::vector<Event> simple_events(const Indicator& ind, const std::vector<std::st
     }
   } else {
     const auto g = [&ind](const TangentPoint& tp) { return continuous_value(ind, tp.point); };
-    accuracy = locate_root(g, a, b, solve, settings, at, located);
+    accuracy = locate_root(g, a, b, solve, settings, at, located, ind.value_tolerance);
   }
   Event event = event_at(resolved_type(ind, a.point.point), ind, names, at);
   event.located = located;
@@ -114,7 +114,7 @@ std::vector<Indicator> make_indicators(const Settings& settings,
   for (const auto& crossing : settings.level_crossings)
     out.push_back({EventType::kZeroCrossing,
                    find_monitor(monitor_names, crossing.monitor, "level_crossings"), -1,
-                   crossing.level});
+                   crossing.level, crossing.value_tolerance});
   for (const auto& pair : settings.inflections)
     out.push_back({EventType::kInflection, find_monitor(monitor_names, pair.monitor, "inflections"),
                    find_monitor(monitor_names, pair.against, "inflections")});

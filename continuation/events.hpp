@@ -31,6 +31,7 @@ struct Indicator {
   int monitor = -1;    // index into the monitor names (extrema, zero crossings, features)
   int against = -1;    // inflections: the abscissa monitor; slope extrema: -1 (the parameter)
   double level = 0.0;  // zero crossings: of m - level (Settings::level_crossings)
+  double value_tolerance = 0.0;  // level crossings: LevelCrossing::value_tolerance
 };
 
 // The indicators asked for by the settings. Throws std::invalid_argument naming an unknown

@@ -59,12 +59,15 @@ class NaturalStepper final : public Stepper {
     return dir_ * (p - from.current.point.p);
   }
 
-  bool solve_on_segment(const State& from, const StepResult& step, double sigma, Vector& x,
-                        double& p) override {
+  bool solve_on_segment(const State& from, const StepResult& step, double sigma,
+                        const SegmentChord* chord, Vector& x, double& p) override {
     const Point& a = from.current.point;
     p = a.p + dir_ * sigma;
     // Chord predictor first; if the corrector fails from there, the step's own predictor.
-    x = a.x + (sigma / step.sigma_end) * (step.x - a.x);
+    x = chord ? Vector(chord->lo.x +
+                       ((sigma - chord->sigma_lo) / (chord->sigma_hi - chord->sigma_lo)) *
+                           (chord->hi.x - chord->lo.x))
+              : Vector(a.x + (sigma / step.sigma_end) * (step.x - a.x));
     if (solve_at(problem_, x, p, settings_.newton).converged) return true;
     x = predict(from, p);
     return solve_at(problem_, x, p, settings_.newton).converged;

@@ -55,6 +55,9 @@ struct InflectionPair {
 struct LevelCrossing {
   std::string monitor;
   double level = 0.0;
+  // The location stops once |m - level| <= value_tolerance (monitor units; 0: by the bracket's
+  // width alone, event_tolerance): event_location.hpp locate_root.
+  double value_tolerance = 0.0;
 };
 
 struct Settings {

@@ -2,9 +2,9 @@
 // eigenvalues of the restricted tangent (Point::negative_eigenvalues) changes between two accepted
 // points. A change from n_a to n_b means that the eigenvalues number min(n_a, n_b) + 1 ...
 // max(n_a, n_b) (ascending, 1-based) crossed zero (Sylvester); each crossing is one event, located
-// by Illinois regula falsi on that eigenvalue, which is a continuous function along the branch
-// (bisection on the count when fewer eigenpairs are computed, or when the computed eigenvalue does
-// not change sign across the step). The located point is classified:
+// by Brent's method (event_location.hpp) on that eigenvalue, which is a continuous function along
+// the branch (bisection on the count when fewer eigenpairs are computed, or when the computed
+// eigenvalue does not change sign across the step). The located point is classified:
 //   limit point   |dp/ds| at the event <= kFoldRatio max(|dp/ds| at A, at B): dp/ds vanishes with
 //                 the eigenvalue (a simple fold: the critical mode is the branch's own tangent)
 //   bifurcation   otherwise: the branch passes with dp/ds != 0 while J restricted is singular

@@ -177,11 +177,11 @@ class Tracer {
   // Points inside the step, analysed as `needs` says (all of needs_ by default).
   SegmentSolver segment(const StepResult& step) { return segment(step, needs_); }
   SegmentSolver segment(const StepResult& step, const AnalysisNeeds& needs) {
-    return [this, &step, needs](double sigma, TangentPoint& out) {
+    return [this, &step, needs](double sigma, const SegmentChord* chord, TangentPoint& out) {
       const TangentPoint& a = state_.current;
       Vector x;
       double p = 0.0;
-      return stepper_.solve_on_segment(state_, step, sigma, x, p) &&
+      return stepper_.solve_on_segment(state_, step, sigma, chord, x, p) &&
              analyse(x, p, a.tangent_x, a.point.tangent_p, needs, out);
     };
   }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "continuation/checkpoint.hpp"
+#include "continuation/event_location.hpp"
 
 namespace si::cont {
 
@@ -42,9 +43,10 @@ class Stepper {
   // The local coordinate of (x, p) on the segment of `step`.
   virtual double sigma_of(const State& from, const StepResult& step, const Vector& x,
                           double p) const = 0;
-  // (x, p) on the segment of `step` at local coordinate sigma, from the chord predictor.
-  virtual bool solve_on_segment(const State& from, const StepResult& step, double sigma, Vector& x,
-                                double& p) = 0;
+  // (x, p) on the segment of `step` at local coordinate sigma, from the predictor on `chord`
+  // (nullptr: the chord of the step's ends).
+  virtual bool solve_on_segment(const State& from, const StepResult& step, double sigma,
+                                const SegmentChord* chord, Vector& x, double& p) = 0;
 };
 
 // Where a fresh run starts: the point (solved at p first), the reference that orients its first

@@ -43,6 +43,13 @@ struct DamageResults {
 // The event name of an onset in events.json.
 inline constexpr const char* kDamageOnsetEvent = "damage_onset";
 
+// The onset's location on the continuation stops when the index is within this of 1 (the
+// level crossing's value tolerance, continuation/event_location.hpp): the onset force is then
+// known to about 1e-7 relative (an index grows about in proportion to the force), far below the
+// strengths' own scatter, and the location needs two or three corrector solves instead of the ~10
+// that a 1e-8 bracket in arclength takes (docs/theory/failure.md 8).
+inline constexpr double kOnsetIndexTolerance = 1e-7;
+
 // Fills r.damage from the run's events and points (the onsets' events are renamed
 // kDamageOnsetEvent). Nothing for a case without a `damage:` section.
 void add_damage_results(const IndentationSetup& setup, PathResult& r);

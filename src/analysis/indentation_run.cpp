@@ -290,7 +290,7 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   // Damage onset: each monitored failure index reaching 1 (analysis/damage_results.hpp).
   if (s.spec.damage)
     for (Criterion k : s.spec.damage->criteria)
-      c.level_crossings.push_back({column_name(failure_column(k)), 1.0});
+      c.level_crossings.push_back({column_name(failure_column(k)), 1.0, kOnsetIndexTolerance});
   // Inflections of T_N against k11, k22 (the critical force) come from the points afterwards,
   // by the curve-feature rules (critical_force.hpp). The library's located ones (inflections)
   // re-solve inside every step with a resolved sign change and evaluate second derivatives at

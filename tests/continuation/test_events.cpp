@@ -23,11 +23,16 @@ class CubicWithAbscissa final : public Problem {
  public:
   int size() const override { return cubic_.size(); }
   bool residual(const Vector& x, double p, Vector& F) override { return cubic_.residual(x, p, F); }
-  bool factorize(const Vector& x, double p) override { return cubic_.factorize(x, p); }
+  bool factorize(const Vector& x, double p) override {
+    ++factorizations;
+    return cubic_.factorize(x, p);
+  }
   bool solve(Vector& b) override { return cubic_.solve(b); }
   std::vector<std::string> monitor_names() const override { return {"y", "p", "q"}; }
   Vector monitors(const Vector& x, double p) override { return Vector{{x(0), p, p * p * p + p}}; }
   std::vector<int> signature(const Vector& x, double /*p*/) override { return {x(0) > -1.0}; }
+
+  int factorizations = 0;
 
  private:
   test::CubicBranchProblem cubic_;
@@ -156,6 +161,46 @@ TEST(ContEvents, SignatureChangeUnlocatedWhenNotAsked) {
   ASSERT_EQ(changes.size(), 2u);  // at 2 cos(4 pi/9) and 2 cos(2 pi/9)
   EXPECT_FALSE(changes[0].located);
   EXPECT_EQ(changes[0].p, branch.points[changes[0].step].p);  // reported at the later point
+}
+
+// With a value tolerance the location stops once |y - 1| is within it: the crossings are where
+// y = 1 to that tolerance (p to it over |y'|, and the reported accuracy bounds the true
+// distance), found with fewer corrector solves than the 1e-9 bracket; without it (0) the
+// location is the bracket's, as above. What must not change: the number of crossings.
+TEST(ContEvents, LevelCrossingValueToleranceStopsWithinTheValue) {
+  const double pi = std::acos(-1.0);
+  const double expected[] = {2 * std::cos(7 * pi / 9), 2 * std::cos(5 * pi / 9),
+                             2 * std::cos(pi / 9)};
+  for (Method method : {Method::kNatural, Method::kPseudoArclength}) {
+    int factorizations[2] = {0, 0};
+    for (int loose = 0; loose < 2; ++loose) {
+      Settings s = event_settings(method);
+      s.zero_crossing_monitors.clear();
+      s.extremum_monitors.clear();
+      s.inflections.clear();
+      const double tolerance = loose ? 1e-6 : 0.0;
+      s.level_crossings = {{"y", 1.0, tolerance}};
+      CubicWithAbscissa problem;
+      const Vector x0 = Vector::Constant(1, test::CubicBranchProblem::branch(-2.4));
+      const Branch b = method == Method::kNatural ? natural(problem, x0, -2.4, s)
+                                                  : pseudo_arclength(problem, x0, -2.4, s);
+      factorizations[loose] = problem.factorizations;
+      const auto crossings = test::events_of(b, EventType::kZeroCrossing);
+      ASSERT_EQ(crossings.size(), 3u);
+      for (int i = 0; i < 3; ++i) {
+        const Event& e = crossings[i];
+        EXPECT_TRUE(e.located);
+        const double slope = 3 * expected[i] * expected[i] - 3;  // dy/dp at the crossing
+        if (loose) {
+          EXPECT_LE(std::abs(e.monitors(0) - 1.0), tolerance);
+          EXPECT_NEAR(e.p, expected[i], 1.01 * tolerance / std::abs(slope));
+        } else {
+          EXPECT_NEAR(e.p, expected[i], 1e-9);
+        }
+      }
+    }
+    EXPECT_LT(factorizations[1], factorizations[0]) << "the value test saves no solve";
+  }
 }
 
 }  // namespace
