@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "analysis/contact_spec.hpp"
 #include "analysis/damage_spec.hpp"
@@ -19,6 +20,10 @@ struct IndentationCase : ShellModelSpec {
   PathSpec path;
   std::optional<DamageSpec> damage;  // the `damage:` section; none: no damage output at all
 };
+
+// The criteria whose failure indices the run monitors (the `damage:` section's; their columns are
+// the run's).
+std::vector<Criterion> monitored_criteria(const IndentationCase& c);
 
 // The contact face offset of a case: the laminate's top face (contact.surface: outer) or its
 // mid-surface (contact.surface: mid, the paper's choice), measured from the reference surface.

@@ -17,12 +17,14 @@
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "analysis/critical_point.hpp"
 #include "analysis/damage_probe.hpp"
 #include "analysis/damage_results.hpp"
+#include "analysis/imperfection_seed.hpp"
 #include "analysis/indentation_case.hpp"
 #include "continuation/branch.hpp"
 #include "continuation/settings.hpp"
@@ -41,6 +43,9 @@ struct IndentationSetup {
   // The failure indices at the nodes near the indenter (a case whose `damage:` section names
   // criteria); the problem's probe.
   std::shared_ptr<const DamageProbe> damage;
+  // path.imperfection: where the mode came from and the translations added to model.mesh
+  // (imperfection_seed.hpp); none for a perfect shell.
+  std::optional<ImperfectionSeed> imperfection;
 
   // Throws an input error naming the case file and key for a case that cannot run.
   // linear_solver: the contact Jacobian's solver (indentation_problem.hpp, docs/performance.md).

@@ -1,11 +1,23 @@
 // The indentation depth path of a run (docs/case-file.md `path`).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 namespace si {
 
 enum class PathMethod { kNatural, kPseudoArclength };
+
+// A geometric imperfection seeded from a critical mode (docs/case-file.md `path.imperfection`,
+// analysis/imperfection_seed.hpp): the mesh's nodes move by `amplitude` (mm) times mode `mode`
+// (1 = the lowest) of the restricted tangent at the perfect path's first stability change,
+// scaled so that its largest nodal translation is 1.
+struct ImperfectionSpec {
+  int mode = 1;
+  double amplitude = 0.0;
+};
+// The modes an imperfection may name: the stability analysis computes this many at most.
+inline constexpr int kMaxImperfectionModes = 10;
 
 // All lengths in mm.
 struct PathSpec {
@@ -21,6 +33,7 @@ struct PathSpec {
   // The onset of geometric nonlinearity is the first depth where the force departs from the
   // linear-kinematics force by this fraction of it (analysis/critical_points.hpp), in (0, 1).
   double nonlinearity_fraction = 0.05;
+  std::optional<ImperfectionSpec> imperfection;  // none: the perfect shell
 };
 
 // The depth grid of a path: `depths`, or step, 2 step, ..., depth_max.

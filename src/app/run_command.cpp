@@ -260,6 +260,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
       << setup.problem->num_shell_unknowns() << " shell unknowns, "
       << setup.problem->candidates().size() << " contact candidates, first touch at travel "
       << setup.problem->first_touch() << " mm\n";
+  if (setup.imperfection) err << imperfection_summary(*setup.imperfection) << "\n";
   if (cf.path.stability && setup.model.symmetry_factor > 1)
     err << "note: path.stability on a symmetric part of the shell sees only the modes symmetric "
            "about its planes (mesh.symmetry: full for all of them)\n";

@@ -15,6 +15,7 @@
 #include "io/laminate_reader.hpp"
 #include "io/material_reader.hpp"
 #include "io/named_sets_reader.hpp"
+#include "io/path_reader.hpp"
 #include "io/plausible_range.hpp"
 #include "io/spellings.hpp"
 #include "io/yaml_reader.hpp"
@@ -45,11 +46,8 @@ const Choices<ContactSolver> kSolvers{{"kinsol", ContactSolver::kKinsol},
                                       {"active_set", ContactSolver::kActiveSet}};
 const Choices<ContactTraction> kTractions{{"nodal", ContactTraction::kNodal},
                                           {"interpolated", ContactTraction::kInterpolated}};
-const Choices<PathMethod> kMethods{{"natural", PathMethod::kNatural},
-                                   {"pseudo_arclength", PathMethod::kPseudoArclength}};
 const Choices<LoadType> kLoadTypes{{"apex_force", LoadType::kApexForce},
                                    {"pressure", LoadType::kPressure}};
-const Choices<bool> kBooleans{{"false", false}, {"true", true}};
 
 // A section given as a map, or std::nullopt when the section is absent (defaults apply).
 std::optional<MapReader> section(const MapReader& top, const std::string& key) {
@@ -117,8 +115,8 @@ void read_mesh_file(const MapReader& map, MeshSpec& mesh) {
     throw_input("cannot open the mesh file " + mesh.file +
                     " (a relative path is taken from the case file's directory)",
                 map.where("file"));
-  mesh.reorient = map.choice_or("reorient", kBooleans, mesh.reorient);
-  mesh.flip = map.choice_or("flip", kBooleans, mesh.flip);
+  mesh.reorient = map.choice_or("reorient", boolean_spellings(), mesh.reorient);
+  mesh.flip = map.choice_or("flip", boolean_spellings(), mesh.flip);
 }
 
 MeshSpec read_mesh(const MapReader& top, ShellType shell, bool graded) {
@@ -242,7 +240,7 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics,
                       "`local: anisotropic` or remove it",
                   map->where(key));
   contact.traction = map->choice_or("traction", kTractions, contact.traction);
-  contact.fbar = map->choice_or("fbar", kBooleans, contact.fbar);
+  contact.fbar = map->choice_or("fbar", boolean_spellings(), contact.fbar);
   if (contact.traction == ContactTraction::kInterpolated && kinematics != Kinematics::kLinear)
     throw_input(
         "the interpolated contact traction (the paper's option) is defined for linear "
@@ -272,47 +270,6 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics,
   return contact;
 }
 
-// A local contact law's approach and compliant rows are no constraint on the shell alone: the
-// restricted tangent (docs/theory/continuation.md 12) is defined without one.
-PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
-  PathSpec path;
-  const auto map = section(top, "path");
-  if (!map) return path;
-  map->allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths", "stability",
-                   "nonlinearity_fraction"});
-  path.method = map->choice_or("method", kMethods, path.method);
-  path.depth_max = map->positive_or("depth_max", Dimension::kLength, path.depth_max);
-  path.step = map->positive_or("step", Dimension::kLength, path.step);
-  if (path.step > path.depth_max) {
-    // Point at what the user wrote: a short depth_max can clash with the default step.
-    throw_input("step (" + format_quantity(path.step, Dimension::kLength) +
-                    ") exceeds depth_max (" + format_quantity(path.depth_max, Dimension::kLength) +
-                    ")",
-                map->where(map->has("step") ? "step" : "depth_max"));
-  }
-  path.step_min = map->positive_or("step_min", Dimension::kLength, path.step / 1000.0);
-  path.step_max =
-      map->positive_or("step_max", Dimension::kLength, std::min(10.0 * path.step, path.depth_max));
-  if (path.step_min > path.step_max)
-    throw_input(
-        "step_min exceeds step_max (" + format_quantity(path.step_max, Dimension::kLength) + ")",
-        map->where("step_min"));
-  if (path.step < path.step_min || path.step > path.step_max)
-    throw_input("step must lie in [step_min, step_max] = [" +
-                    format_quantity(path.step_min, Dimension::kLength) + ", " +
-                    format_quantity(path.step_max, Dimension::kLength) + "]",
-                map->where("step"));
-  if (map->has("depths")) path.depths = read_depth_list(*map, "depths", path.depth_max);
-  path.stability = map->choice_or("stability", kBooleans, path.stability);
-  if (path.stability && contact.local != LocalContactModel::kNone)
-    throw_input(
-        "the stability of a point is defined without a local contact law (its approach is no "
-        "constraint on the shell); set `contact.local: none` or `stability: false`",
-        map->where("stability"));
-  path.nonlinearity_fraction = fraction_or(*map, "nonlinearity_fraction", 0.05);
-  return path;
-}
-
 // The load section is optional; once written, its magnitude is required (no paper default).
 // With a `loads:` list the `load` section may be left out, or give only `steps`.
 std::optional<LoadSpec> read_load(const MapReader& top) {
@@ -337,7 +294,7 @@ std::optional<LoadSpec> read_load(const MapReader& top) {
     case LoadType::kPressure:
       map->allow_only({"type", "pressure", "steps", "follower"});
       load.pressure = map->positive("pressure", Dimension::kStress);
-      load.follower = map->choice_or("follower", kBooleans, load.follower);
+      load.follower = map->choice_or("follower", boolean_spellings(), load.follower);
       break;
   }
   load.steps = map->integer_or("steps", load.steps);
@@ -352,10 +309,10 @@ StaticSettings read_static(const MapReader& top) {
   if (!map) return s;
   map->allow_only({"method", "step", "step_min", "step_max", "parameter_weight", "load_factor_max",
                    "max_steps", "tolerance", "record", "stability"});
-  s.method = map->choice_or("method", kMethods, s.method);
+  s.method = map->choice_or("method", path_method_spellings(), s.method);
   s.tolerance = map->positive_or("tolerance", Dimension::kDimensionless, s.tolerance);
   if (s.tolerance >= 1e-2) throw_input("must be below 1e-2", map->where("tolerance"));
-  s.stability = map->choice_or("stability", kBooleans, s.stability);
+  s.stability = map->choice_or("stability", boolean_spellings(), s.stability);
   if (s.method == PathMethod::kNatural) {
     for (const char* key :
          {"step", "step_min", "step_max", "parameter_weight", "load_factor_max", "max_steps"})

@@ -3,6 +3,8 @@
 #include <map>
 #include <string>
 
+#include "io/spellings.hpp"
+
 namespace si {
 namespace {
 
@@ -17,7 +19,6 @@ const Choices<NamedLoadType> kLoadTypes{{"point", NamedLoadType::kPoint},
                                         {"moment", NamedLoadType::kMoment},
                                         {"edge", NamedLoadType::kEdge},
                                         {"pressure", NamedLoadType::kPressure}};
-const Choices<bool> kBooleans{{"false", false}, {"true", true}};
 
 // Prescribed-displacement keys: translations (length) and rotations (angle).
 const std::vector<std::pair<std::string, SupportDof>> kDofs{{"u_x", SupportDof::kUx},
@@ -130,7 +131,7 @@ NamedLoadSpec read_load(const MapReader& entry) {
     case NamedLoadType::kPressure:
       entry.allow_only({"type", "on", "pressure", "follower"});
       l.pressure = entry.quantity("pressure", Dimension::kStress);
-      l.follower = entry.choice_or("follower", kBooleans, false);
+      l.follower = entry.choice_or("follower", boolean_spellings(), false);
       break;
   }
   if (entry.has("on")) {

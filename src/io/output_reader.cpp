@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/units.hpp"
+#include "io/spellings.hpp"
 #include "io/yaml_reader.hpp"
 
 namespace si {
@@ -11,7 +12,6 @@ const Choices<OutputFormat> kFormats{
     {"csv", OutputFormat::kCsv}, {"json", OutputFormat::kJson}, {"vtu", OutputFormat::kVtu}};
 const Choices<VtuEncoding> kEncodings{
     {"auto", VtuEncoding::kAuto}, {"ascii", VtuEncoding::kAscii}, {"binary", VtuEncoding::kBinary}};
-const Choices<bool> kBooleans{{"false", false}, {"true", true}};
 
 // The entry i of a list under `list_where`, for messages.
 Where entry_where(const Where& list_where, const YAML::Node& entry, std::size_t i) {
@@ -63,7 +63,7 @@ OutputSpec read_output(const MapReader& top, double depth_max, bool quarter) {
   if (map.has("formats")) output.formats = read_formats(map);
   if (map.has("at")) output.at = read_depth_list(map, "at", depth_max);
   output.vtu_encoding = map.choice_or("vtu_encoding", kEncodings, output.vtu_encoding);
-  output.mirror = map.choice_or("mirror", kBooleans, output.mirror);
+  output.mirror = map.choice_or("mirror", boolean_spellings(), output.mirror);
   if (output.mirror && !quarter)
     throw_input("mirror needs a quarter model (mesh.symmetry: quarter)", map.where("mirror"));
   return output;

@@ -197,6 +197,29 @@ nlohmann::json local_contact_json(const IndentationSetup& setup) {
 
 }  // namespace
 
+nlohmann::json imperfection_json(const ImperfectionSeed& s) {
+  return {{"mode", s.spec.mode},
+          {"amplitude_mm", s.spec.amplitude},
+          {"taken_at", s.at_stability_change ? "stability_change" : "last_point"},
+          {"criticality", cont::criticality_name(s.criticality)},
+          {"depth_mm", s.depth},
+          {"force_N", s.force},
+          {"eigenvalue_N_per_mm", s.eigenvalue},
+          {"perfect_points", s.perfect_points}};
+}
+
+std::string imperfection_summary(const ImperfectionSeed& s) {
+  std::ostringstream o;
+  o << "imperfection: mode " << s.spec.mode << " (eigenvalue " << s.eigenvalue << " N/mm) of the "
+    << "perfect shell's restricted tangent at depth " << s.depth << " mm, "
+    << (s.at_stability_change
+            ? "its first stability change (" + cont::criticality_name(s.criticality) + ")"
+            : std::string("the end of its path: no stability change on it"))
+    << ", " << s.perfect_points << " points traced; added with amplitude " << s.spec.amplitude
+    << " mm (largest nodal translation)";
+  return o.str();
+}
+
 nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result) {
   const ShellModel& m = setup.model;
   nlohmann::json points = nlohmann::json::array();
@@ -234,6 +257,7 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
       {"events", events_json(result)},
       {"critical_points", critical_points_json(result.critical)}};
   if (setup.spec.damage) j["damage"] = damage_json(setup, result);
+  if (setup.imperfection) j["imperfection"] = imperfection_json(*setup.imperfection);
   return j;
 }
 

@@ -33,5 +33,8 @@ std::string path_csv(const PathResult& result);
 std::string path_grid_csv(const PathResult& result, double dh, double depth_max);
 nlohmann::json events_json(const PathResult& result);
 nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result);
+// path.json's `imperfection` (docs/results.md) and the run's one-line report of it.
+nlohmann::json imperfection_json(const ImperfectionSeed& seed);
+std::string imperfection_summary(const ImperfectionSeed& seed);
 
 }  // namespace si

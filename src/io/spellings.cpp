@@ -31,6 +31,17 @@ const Choices<Kinematics>& kinematics_spellings() {
   return c;
 }
 
+const Choices<bool>& boolean_spellings() {
+  static const Choices<bool> c{{"false", false}, {"true", true}};
+  return c;
+}
+
+const Choices<PathMethod>& path_method_spellings() {
+  static const Choices<PathMethod> c{{"natural", PathMethod::kNatural},
+                                     {"pseudo_arclength", PathMethod::kPseudoArclength}};
+  return c;
+}
+
 const Choices<Criterion>& criterion_spellings() {
   static const Choices<Criterion> c{{"max_stress", Criterion::kMaxStress},
                                     {"tsai_wu", Criterion::kTsaiWu},

@@ -7,6 +7,7 @@
 
 #include "analysis/contact_spec.hpp"
 #include "analysis/damage_spec.hpp"
+#include "analysis/path_spec.hpp"
 #include "damage/impact_energy.hpp"
 #include "damage/through_thickness_failure.hpp"
 #include "io/yaml_reader.hpp"
@@ -20,7 +21,9 @@ const Choices<LocalContactModel>& local_contact_spellings();
 // resolved)
 const Choices<LocalSupport>& local_support_spellings();
 const Choices<LocalPlies>& local_plies_spellings();
-const Choices<Kinematics>& kinematics_spellings();  // linear, nonlinear
+const Choices<Kinematics>& kinematics_spellings();   // linear, nonlinear
+const Choices<bool>& boolean_spellings();            // false, true
+const Choices<PathMethod>& path_method_spellings();  // natural, pseudo_arclength
 // Damage onset (docs/case-file.md `damage`, docs/results.md).
 const Choices<Criterion>& criterion_spellings();      // max_stress, tsai_wu, hashin, delamination
 const Choices<StressRecovery>& recovery_spellings();  // first_order, refined

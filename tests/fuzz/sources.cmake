@@ -7,7 +7,8 @@ set(SHELLINDENT_FUZZ_SOURCES
     core/decimal_number.cpp core/error.cpp core/units.cpp core/value_excerpt.cpp
     core/did_you_mean.cpp damage/criterion_strengths.cpp analysis/path_spec.cpp io/case_file.cpp
     io/damage_reader.cpp io/fixture_reader.cpp io/fraction_reader.cpp io/laminate_reader.cpp
-    io/material_reader.cpp io/named_sets_reader.cpp io/output_reader.cpp io/plausible_range.cpp
+    io/material_reader.cpp io/named_sets_reader.cpp io/output_reader.cpp io/path_reader.cpp
+    io/plausible_range.cpp
     io/spellings.cpp io/yaml_reader.cpp model/fixture.cpp
     model/mesh.cpp
     material/material.cpp material/material_library.cpp material/ply_rotation.cpp
