@@ -17,10 +17,12 @@ bool opposite_signs(double u, double v) {
   return (u > 0.0 && v < 0.0) || (u < 0.0 && v > 0.0);
 }
 
-Criticality classify(double at, double a, double b) {
-  return std::abs(at) <= kFoldRatio * std::max(std::abs(a), std::abs(b))
-             ? Criticality::kLimitPoint
-             : Criticality::kBifurcation;
+// dp/ds at the step's two ends: the parameter turns within the step at a fold, and keeps its
+// direction through a bifurcation. (dp/ds at the event point itself is no test: at a bifurcation
+// the bordered matrix is singular too, and the tangent solved there is any mix of the two
+// branches' tangents, the closer the event is located the more so.)
+Criticality classify(double a, double b) {
+  return opposite_signs(a, b) ? Criticality::kLimitPoint : Criticality::kBifurcation;
 }
 
 }  // namespace
@@ -54,7 +56,7 @@ std::vector<Event> stability_events(const Indicator& indicator, const SegmentPoi
     Event event = event_at(EventType::kStabilityChange, indicator, {}, at);
     event.located = located;
     event.accuracy = accuracy;
-    event.criticality = classify(at.point.tangent_p, pa.tangent_p, pb.tangent_p);
+    event.criticality = classify(pa.tangent_p, pb.tangent_p);
     event.negative_before = rising ? j - 1 : j;
     event.negative_after = rising ? j : j - 1;
     event.eigenvalue = eigenvalue(at.point, j);

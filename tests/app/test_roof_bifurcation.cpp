@@ -7,7 +7,10 @@
 //    z on the apex node, and an antisymmetric mode leaves the apex's deflection unchanged, so the
 //    tangent restricted to the contact and the load-controlled tangent vanish together: `run` and
 //    `static` with the point load locate the same two bifurcations, depth (= apex deflection) and
-//    force, to 1e-6 (each is located to 1e-8 in arclength), and the same force maximum.
+//    force, to 1e-6 (each is located to 1e-8 in arclength), and the same force maximum. Both are
+//    bifurcations under load control too (the load factor keeps falling through them): with
+//    these steps the former classification, by |dp/ds| at the located point, called the second a
+//    limit point.
 // 2. path.imperfection seeded from the first one's mode: the mode is antisymmetric about one of
 //    the roof's mid-planes, and the imperfect path has no bifurcation left: it is stable
 //    throughout (what must not be reported: any stability change).
@@ -95,7 +98,7 @@ TEST(RoofBifurcation, DepthControlLocatesTheLoadControlledBifurcations_SzeLiuLo2
       run_case(dir, "loaded",
                kRoof +
                    "loads: [{type: point, on: apex, force: [0 N, 0 N, -3000 N]}]\n"
-                   "static: {method: pseudo_arclength, step: 0.5 mm, step_max: 1 mm,"
+                   "static: {method: pseudo_arclength, step: 0.2 mm, step_max: 0.25 mm,"
                    " parameter_weight: 10 mm, load_factor_max: 1.1, stability: true}\n",
                "static");
   const std::vector<Change> depth = changes_of(pressed["events"], "depth_mm");
