@@ -2,9 +2,10 @@
 """shellindent on the cap against the 3-D CalculiX reference (issue 20).
 
   /usr/bin/python3 bench/calculix/compare_shellindent.py [--build build] [--size-apex 0.5]
-      [--laws none,hertz] [--layups ...] [--kinematics linear,nonlinear]
+      [--laws none,hertz,anisotropic:plate] [--layups ...] [--kinematics linear,nonlinear]
 
-For every lay-up, kinematics and local law it writes a case file (work/si/), runs
+For every lay-up, kinematics and local law (`anisotropic:SUPPORT` for contact.local: anisotropic
+with contact.local_support: SUPPORT) it writes a case file (work/si/), runs
 `build/shellindent run CASE --out DIR`, and compares its force with the reference of
 results/cap_reference.csv (analyse.py): at equal travel (0.1, 0.25, 0.5, 1 mm) and at equal apex
 mid-surface deflection (the reference's force interpolated at shellindent's apex deflection).
@@ -30,6 +31,12 @@ TRAVELS = [0.1, 0.25, 0.5, 1.0]
 QUARTER = {"[0]8": True, "[0/90]2S": True, "[45/-45]2S": False}
 
 
+def local_keys(law: str) -> str:
+    """The contact keys of a law token: `hertz`, or `anisotropic:plate` (law and its support)."""
+    name, _, support = law.partition(":")
+    return f"local: {name}" + (f", local_support: {support}" if support else "")
+
+
 def case_text(layup: str, kinematics: str, law: str, size_apex: float, depth_max: float,
               depths: list[float], refine_radius: float = 13.0) -> str:
     sym = "quarter" if QUARTER[layup] else "full"
@@ -41,7 +48,7 @@ def case_text(layup: str, kinematics: str, law: str, size_apex: float, depth_max
             f"refine_radius: {refine_radius:g} mm, symmetry: {sym}}}\n"
             f"kinematics: {kinematics}\n"
             f"indenter: {{shape: sphere, radius: 12.7 mm}}\n"
-            f"contact: {{surface: outer, solver: kinsol, local: {law}}}\n"
+            f"contact: {{surface: outer, solver: kinsol, {local_keys(law)}}}\n"
             f"path: {{method: natural, depth_max: {depth_max:g} mm, step: 0.05 mm, "
             f"depths: [{dl}]}}\n"
             f"output: {{vtu_every: 0, formats: [csv]}}\n")
@@ -97,7 +104,8 @@ def main(argv=None):
             rf = np.array([r["force_N"] for r in mine])
             rw = np.array([r["apex_mid_w_mm"] for r in mine])
             for law in a.laws.split(","):
-                tag = f"{layup.strip('[]').replace('/', '-').replace(']', '')}_{kin}_{law}_" \
+                tag = f"{layup.strip('[]').replace('/', '-').replace(']', '')}_{kin}_" \
+                      f"{law.replace(':', '-')}_" \
                       f"{a.size_apex:g}"
                 case = WORK / f"{tag}.yaml"
                 case.write_text(case_text(layup, kin, law, a.size_apex, 1.0, TRAVELS))
@@ -130,10 +138,10 @@ def main(argv=None):
             wr.writeheader()
             for r in rows:
                 wr.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
-    print(f"{'layup':11s} {'kin':9s} {'law':6s} {'travel':>6s} {'F_si':>9s} {'F_3D':>9s} "
+    print(f"{'layup':11s} {'kin':9s} {'law':22s} {'travel':>6s} {'F_si':>9s} {'F_3D':>9s} "
           f"{'ratio':>6s} {'w_si':>7s} {'w_3D':>7s} {'ratio@w':>7s}")
     for r in rows:
-        print(f"{r['layup']:11s} {r['kinematics']:9s} {r['law']:6s} {r['travel_mm']:6.2f} "
+        print(f"{r['layup']:11s} {r['kinematics']:9s} {r['law']:22s} {r['travel_mm']:6.2f} "
               f"{r['si_force_N']:9.1f} {r['ref_force_N']:9.1f} {r['ratio_travel']:6.3f} "
               f"{r['si_apex_w_mm']:7.4f} {r['ref_apex_w_mm']:7.4f} {r['ratio_deflection']:7.3f}")
     return 0
