@@ -37,6 +37,7 @@ HASHIN_INDEX = "hashin_index"
 DELAMINATION_INDEX = "delamination_index"
 STABLE = "stable"
 LOWEST_EIGENVALUE = "lowest_eigenvalue"
+BRANCH = "branch"
 
 # All columns, in path.csv's order.
 PATH_COLUMNS = (
@@ -73,6 +74,7 @@ PATH_COLUMNS = (
     DELAMINATION_INDEX,
     STABLE,
     LOWEST_EIGENVALUE,
+    BRANCH,
 )
 
 UNITS = {
@@ -109,4 +111,5 @@ UNITS = {
     DELAMINATION_INDEX: "-",
     STABLE: "-",
     LOWEST_EIGENVALUE: "N/mm",
+    BRANCH: "-",
 }

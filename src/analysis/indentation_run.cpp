@@ -11,6 +11,7 @@
 #include "analysis/local_contact.hpp"
 #include "analysis/path_columns.hpp"
 #include "contact/indenter_factory.hpp"
+#include "continuation/branch_switching.hpp"
 #include "continuation/checkpoint.hpp"
 #include "continuation/kinsol_corrector.hpp"
 #include "continuation/natural.hpp"
@@ -44,9 +45,11 @@ class PathRecorder {
   PathRecorder(PathResult& result, const PathCallback& callback)
       : result_(result), callback_(callback) {}
   bool add(IndentationProblem& problem, const cont::Vector& z, double h, int iterations,
-           double step, const Eigen::VectorXd& depth_slopes = {}, PointStability stability = {}) {
+           double step, const Eigen::VectorXd& depth_slopes = {}, PointStability stability = {},
+           int branch = 0) {
     PathPoint p;
     p.index = static_cast<int>(result_.points.size());
+    p.branch = branch;
     p.state = problem.evaluate(z, h);
     p.iterations = iterations;
     p.step = step;
@@ -339,6 +342,49 @@ std::string end_reason(const cont::Branch& b, const PathSpec& path) {
                          format_quantity(-path.depth_max, Dimension::kLength);
 }
 
+// Where a branch ends under path.branch_switch: the fundamental branch at its first bifurcation;
+// a switched one where it meets another branch: at a stability change, or at a fold of the depth
+// (a branch that leaves one bifurcation of a symmetric path and arrives at another, like the
+// hinged roof's, turns back there with the eigenvalue touching zero on both sides: a pitchfork
+// seen from the new branch, no change of stability). nullptr if none yet.
+const cont::Event* first_change(const cont::Branch& b, bool fundamental) {
+  for (const cont::Event& e : b.events) {
+    if (e.type == cont::EventType::kStabilityChange &&
+        (!fundamental || e.criticality == cont::Criticality::kBifurcation))
+      return &e;
+    if (!fundamental && e.type == cont::EventType::kLimitPoint) return &e;
+  }
+  return nullptr;
+}
+
+// path.branch_switch after the fundamental branch stopped at its first bifurcation `at`: the new
+// branch from there (continuation/branch_switching.hpp), its points and events appended to r
+// (event steps counted in r's points), until it meets a stability change or a bound.
+void follow_switched_branch(IndentationSetup& s, const cont::Settings& settings,
+                            const cont::Event* at, const BranchSwitchSpec& spec,
+                            const cont::Callback& on_point, PathResult& r) {
+  const int before = static_cast<int>(r.points.size());
+  cont::BranchSwitch options;
+  options.direction = spec.direction;
+  const cont::Branch n = cont::switch_branch(*s.problem, *at, settings, options, on_point);
+  for (cont::Event e : n.events) {
+    e.step += before;
+    r.events.push_back(std::move(e));
+  }
+  if (!n.points.empty() && n.points.back().x.size() > 0) r.final_unknowns = n.points.back().x;
+  const cont::Event* end = first_change(n, false);
+  const std::string from =
+      "branch 1 from the bifurcation at depth " + format_quantity(at->p, Dimension::kLength);
+  if (end)
+    finish(r, true, RunStatus::kCompleted,
+           from + " to where it meets another branch (" + cont::event_type_name(end->type) +
+               (end->type == cont::EventType::kLimitPoint ? " of the depth" : "") + ") at depth " +
+               format_quantity(end->p, Dimension::kLength));
+  else
+    finish(r, n.status == cont::Status::kReachedBound, run_status(n.status),
+           from + ": " + end_reason(n, s.spec.path));
+}
+
 PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
                             const PathControl& control) {
   PathResult r;
@@ -356,9 +402,14 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   settings.checkpoint_keeps_x = false;  // the points live in the attachment
   settings.checkpoint_attachment = [&] { return path_attachment(*s.problem, r, control); };
   PathRecorder rec(r, callback);
-  const cont::Callback on_point = [&](const cont::Point& pt, const cont::Branch&) {
+  // path.branch_switch: the fundamental branch ends at its first bifurcation (the point past it,
+  // on the fundamental branch, is not kept), the switched one at its first stability change.
+  const std::optional<BranchSwitchSpec> switching = s.spec.path.branch_switch;
+  if (switching) settings.checkpoint_interval = 0;  // a resume could not tell the branches apart
+  const cont::Callback on_point = [&](const cont::Point& pt, const cont::Branch& branch) {
+    if (switching && first_change(branch, pt.branch_id == 0)) return false;
     return rec.add(*s.problem, pt.x, pt.p, pt.newton_iterations, pt.step, depth_slopes(pt),
-                   stability_of(pt));
+                   stability_of(pt), pt.branch_id);
   };
   const bool natural = settings.method == cont::Method::kNatural;
   cont::Branch b;
@@ -376,6 +427,11 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   if (!b.points.empty() && b.points.back().x.size() > 0) r.final_unknowns = b.points.back().x;
   const bool ok = b.status == cont::Status::kCompleted || b.status == cont::Status::kReachedBound;
   finish(r, ok, run_status(b.status), end_reason(b, s.spec.path));
+  if (!switching) return r;
+  if (const cont::Event* at = first_change(b, true))
+    follow_switched_branch(s, settings, at, *switching, on_point, r);
+  else if (ok)
+    r.reason += "; path.branch_switch: no bifurcation on the path, no branch to switch to";
   return r;
 }
 }  // namespace

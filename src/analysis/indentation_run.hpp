@@ -70,6 +70,9 @@ struct PathPoint {
   // - its number of negative eigenvalues (-1: not computed), stable (none negative or zero), and
   // its lowest eigenvalue (N/mm in the shell's chart coordinates).
   int negative_eigenvalues = -1;
+  // The branch the point lies on: 0 the fundamental path, 1 the one switched to at its first
+  // bifurcation (path.branch_switch).
+  int branch = 0;
   bool stable = false;
   double lowest_eigenvalue = std::nan("");
 };

@@ -204,8 +204,20 @@ std::vector<ColumnSpec> make_columns() {
                     [](const PathPoint& p) { return p.lowest_eigenvalue; },
                     [](PathPoint& p, double v) { p.lowest_eigenvalue = v; }};
   lowest.stability = true;
+  ColumnSpec branch{PathColumn::kBranch,
+                    "branch",
+                    "-",
+                    "the branch the point lies on: 0 the fundamental path, 1 the branch switched "
+                    "to at its first bifurcation (`path.branch_switch`; written with "
+                    "`path.stability: true`; path_grid.csv: the smaller end)",
+                    nullptr,
+                    [](const PathPoint& p) { return static_cast<double>(p.branch); },
+                    [](PathPoint& p, double v) { p.branch = static_cast<int>(v); }};
+  branch.grid = G::kMinimum;
+  branch.stability = true;
   c.push_back(stable);
   c.push_back(lowest);
+  c.push_back(branch);
   for (std::size_t i = 0; i < c.size(); ++i)
     SI_ASSERT(static_cast<std::size_t>(c[i].id) == i);  // the table is in PathColumn's order
   return c;

@@ -53,7 +53,8 @@ enum class PathColumn {
   kDelaminationIndex,
   // The point's stability, only in runs with path.stability: true.
   kStable,
-  kLowestEigenvalue
+  kLowestEigenvalue,
+  kBranch
 };
 
 // How path_grid.csv interpolates a column between two converged points (docs/results.md).

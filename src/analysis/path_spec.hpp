@@ -19,6 +19,14 @@ struct ImperfectionSpec {
 // The modes an imperfection may name: the stability analysis computes this many at most.
 inline constexpr int kMaxImperfectionModes = 10;
 
+// Branch switching at the fundamental path's first bifurcation (docs/case-file.md
+// `path.branch_switch`, continuation/branch_switching.hpp): the new branch is followed from there,
+// along the critical mode's +direction (1) or its other half (-1), until it meets another
+// stability change (where it rejoins a branch) or a bound of the depth.
+struct BranchSwitchSpec {
+  int direction = 1;
+};
+
 // All lengths in mm.
 struct PathSpec {
   PathMethod method = PathMethod::kPseudoArclength;
@@ -33,7 +41,8 @@ struct PathSpec {
   // The onset of geometric nonlinearity is the first depth where the force departs from the
   // linear-kinematics force by this fraction of it (analysis/critical_points.hpp), in (0, 1).
   double nonlinearity_fraction = 0.05;
-  std::optional<ImperfectionSpec> imperfection;  // none: the perfect shell
+  std::optional<ImperfectionSpec> imperfection;   // none: the perfect shell
+  std::optional<BranchSwitchSpec> branch_switch;  // none: the fundamental path only
 };
 
 // The depth grid of a path: `depths`, or step, 2 step, ..., depth_max.

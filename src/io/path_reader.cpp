@@ -35,6 +35,33 @@ ImperfectionSpec read_imperfection(const MapReader& path, bool stability) {
   return s;
 }
 
+// path.branch_switch: {direction: 1 | -1}. The bifurcation is found by the stability analysis and
+// the new branch needs the arclength (it may turn in depth); an imperfect shell has no
+// bifurcation to switch at.
+BranchSwitchSpec read_branch_switch(const MapReader& path, const PathSpec& spec) {
+  const MapReader map(path.at("branch_switch"), path.where("branch_switch"));
+  if (!spec.stability)
+    throw_input(
+        "branching needs the bifurcation that the stability analysis locates: set "
+        "`path.stability: true` (and `contact.local: none`)",
+        path.where("branch_switch"));
+  if (spec.method != PathMethod::kPseudoArclength)
+    throw_input("the new branch is followed by its arclength: set `path.method: pseudo_arclength`",
+                path.where("branch_switch"));
+  if (spec.imperfection)
+    throw_input(
+        "an imperfect shell has no bifurcation to switch at: give `imperfection` or "
+        "`branch_switch`, not both",
+        path.where("branch_switch"));
+  map.allow_only({"direction"});
+  BranchSwitchSpec s;
+  s.direction = map.integer_or("direction", s.direction);
+  if (s.direction != 1 && s.direction != -1)
+    throw_input("give 1 (along the critical mode) or -1 (the branch's other half)",
+                map.where("direction"));
+  return s;
+}
+
 }  // namespace
 
 // A local contact law's approach and compliant rows are no constraint on the shell alone: the
@@ -44,7 +71,7 @@ PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
   if (!top.has("path")) return path;
   const MapReader map(top.at("path"), top.where("path"));
   map.allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths", "stability",
-                  "nonlinearity_fraction", "imperfection"});
+                  "nonlinearity_fraction", "imperfection", "branch_switch"});
   path.method = map.choice_or("method", path_method_spellings(), path.method);
   path.depth_max = map.positive_or("depth_max", Dimension::kLength, path.depth_max);
   path.step = map.positive_or("step", Dimension::kLength, path.step);
@@ -76,6 +103,7 @@ PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
         map.where("stability"));
   path.nonlinearity_fraction = fraction_or(map, "nonlinearity_fraction", 0.05);
   if (map.has("imperfection")) path.imperfection = read_imperfection(map, path.stability);
+  if (map.has("branch_switch")) path.branch_switch = read_branch_switch(map, path);
   return path;
 }
 

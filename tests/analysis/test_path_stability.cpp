@@ -35,13 +35,14 @@ TEST(PathStability, PaperCapFundamentalPathIsStable_NoStabilityEvent) {
     EXPECT_GT(p.lowest_eigenvalue, 0.0) << p.state.depth;
   }
   EXPECT_EQ(stability_events(r), 0);
-  // The written columns include the stability ones, restored from their values.
+  // The written columns include the stability ones (and the branch), restored from their values.
   const std::vector<PathColumn> columns = result_columns(r);
-  EXPECT_EQ(columns.size(), base_columns().size() + 2);
+  EXPECT_EQ(columns.size(), base_columns().size() + 3);  // stable, lowest_eigenvalue, branch
   const std::vector<double> v = path_point_values(r.points.back(), columns);
   const PathPoint back = path_point_from_values(v, columns);
   EXPECT_TRUE(back.stable);
   EXPECT_EQ(back.lowest_eigenvalue, r.points.back().lowest_eigenvalue);
+  EXPECT_EQ(back.branch, 0);
 }
 
 // Without the key nothing is computed and the stability columns are not written.

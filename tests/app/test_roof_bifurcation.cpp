@@ -181,5 +181,49 @@ TEST(RoofBifurcation, ImperfectionFromTheCriticalModeRemovesTheBifurcations) {
   EXPECT_LT(antisymmetry_defect(reference, shape), 1e-3);
 }
 
+// path.branch_switch at the first bifurcation: the new (asymmetric) branch leaves the fundamental
+// path at B1 and arrives at B2, where it turns back in depth (a pitchfork seen from the new branch:
+// the depth's fold is exactly B2 by the roof's symmetry, and the run stops there). Its points are
+// stable (the depth-controlled roof follows it), lie between B1 and B2, carry branch 1 and differ
+// from the fundamental path's at the same depth; direction -1 (the mirror image) gives the same
+// forces. What must not happen: a point of the fundamental branch past B1 in the output, or the
+// branch followed round its loop again.
+TEST(RoofBifurcation, BranchSwitchingFollowsTheAsymmetricBranchFromOneBifurcationToTheOther) {
+  const fs::path dir = fresh_dir("roof_branch_switch");
+  const json perfect = run_case(dir, "perfect", pressed_roof(""));
+  const std::vector<Change> b = changes_of(perfect["events"], "depth_mm");
+  ASSERT_EQ(b.size(), 2u);
+  double fold_force[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    const int direction = k == 0 ? 1 : -1;
+    const json run =
+        run_case(dir, "switched_" + std::to_string(k),
+                 pressed_roof(", branch_switch: {direction: " + std::to_string(direction) + "}"));
+    EXPECT_EQ(run["status"], "completed") << run["reason"];
+    int switched = 0;
+    for (const json& p : run["points"]) {
+      const double h = p["depth_mm"].get<double>();
+      if (p["branch"].get<double>() == 0) {
+        EXPECT_LT(h, b[0].depth);  // nothing of the fundamental branch past B1
+        EXPECT_EQ(switched, 0);    // and nothing of it after the switch
+        continue;
+      }
+      ++switched;
+      EXPECT_GT(h, b[0].depth);
+      EXPECT_LT(h, b[1].depth);
+      EXPECT_EQ(p["stable"].get<double>(), 1.0) << h;
+    }
+    EXPECT_GE(switched, 3);
+    std::vector<const json*> folds;
+    for (const json& e : run["events"])
+      if (e["type"] == "limit_point") folds.push_back(&e);
+    ASSERT_EQ(folds.size(), 1u);
+    EXPECT_NEAR((*folds[0])["depth_mm"].get<double>(), b[1].depth, 1e-6 * b[1].depth);
+    fold_force[k] = (*folds[0])["force_N"].get<double>();
+    EXPECT_NEAR(fold_force[k], b[1].force, 1e-6 * b[1].force);
+  }
+  EXPECT_NEAR(fold_force[0], fold_force[1], 1e-6 * fold_force[0]);
+}
+
 }  // namespace
 }  // namespace si

@@ -85,16 +85,17 @@ TEST(PathColumns, NamesAreUniqueAndEveryColumnIsComputedAndRestored) {
     }
   }
   EXPECT_EQ(std::string(column_name(PathColumn::kForce)), "force_N");
-  EXPECT_EQ(path_columns().back().id, PathColumn::kLowestEigenvalue);
+  EXPECT_EQ(path_columns().back().id, PathColumn::kBranch);
 }
 
 // A run has the columns of every run, plus the failure index of each criterion it monitors (in
-// table order, whatever the case's order), plus the stability columns with path.stability; a
+// table order, whatever the case's order), plus the stability columns (stable, lowest eigenvalue,
+// branch) with path.stability; a
 // run without either has exactly the others.
 TEST(PathColumns, OptionalColumnsOnlyInRunsThatAskForThem) {
   const std::vector<PathColumn>& base = base_columns();
   EXPECT_EQ(base.back(), PathColumn::kFrameForce);
-  EXPECT_EQ(base.size() + 6, path_columns().size());
+  EXPECT_EQ(base.size() + 7, path_columns().size());
   const std::vector<PathColumn> run =
       run_columns({Criterion::kQuadraticDelamination, Criterion::kHashin});
   ASSERT_EQ(run.size(), base.size() + 2);
@@ -103,10 +104,12 @@ TEST(PathColumns, OptionalColumnsOnlyInRunsThatAskForThem) {
   EXPECT_EQ(failure_column(Criterion::kTsaiWu), PathColumn::kTsaiWuIndex);
   EXPECT_EQ(path_monitors(run).size(), path_monitors().size() + 2);
   const std::vector<PathColumn> stable = run_columns({Criterion::kHashin}, true);
-  ASSERT_EQ(stable.size(), base.size() + 3);
+  ASSERT_EQ(stable.size(), base.size() + 4);
   EXPECT_EQ(stable[base.size() + 1], PathColumn::kStable);
-  EXPECT_EQ(stable.back(), PathColumn::kLowestEigenvalue);
+  EXPECT_EQ(stable[base.size() + 2], PathColumn::kLowestEigenvalue);
+  EXPECT_EQ(stable.back(), PathColumn::kBranch);
   EXPECT_TRUE(path_column(PathColumn::kStable).stability);
+  EXPECT_TRUE(path_column(PathColumn::kBranch).stability);
   EXPECT_EQ(path_monitors(stable).size(), path_monitors().size() + 1);  // not monitors
 }
 
@@ -119,6 +122,7 @@ TEST(PathColumns, PointValuesRoundTrip) {
   v[static_cast<std::size_t>(PathColumn::kContactNodes)] = 7;
   v[static_cast<std::size_t>(PathColumn::kIterations)] = 3;
   v[static_cast<std::size_t>(PathColumn::kStable)] = 1;
+  v[static_cast<std::size_t>(PathColumn::kBranch)] = 1;  // an integer, like the flag
   EXPECT_EQ(path_point_values(path_point_from_values(v, all), all), v);
   // Without the optional columns the values stop before them.
   v.resize(base_columns().size());
