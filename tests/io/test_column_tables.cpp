@@ -90,8 +90,7 @@ TEST(PathColumns, NamesAreUniqueAndEveryColumnIsComputedAndRestored) {
 
 // A run has the columns of every run, plus the failure index of each criterion it monitors (in
 // table order, whatever the case's order), plus the stability columns (stable, lowest eigenvalue,
-// branch) with path.stability; a
-// run without either has exactly the others.
+// branch) with path.stability; a run without either has exactly the others.
 TEST(PathColumns, OptionalColumnsOnlyInRunsThatAskForThem) {
   const std::vector<PathColumn>& base = base_columns();
   EXPECT_EQ(base.back(), PathColumn::kFrameForce);
