@@ -5,6 +5,7 @@
 #include <numeric>
 #include <set>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "model/patch_fit.hpp"
 
@@ -16,7 +17,6 @@ constexpr int kPatchDegree = 3;
 constexpr int kPatchNodes = 25;
 // Bottom, middle and top of every ply: what ThroughThicknessFailure::evaluate reads.
 constexpr int kPointsPerPly = 3;
-constexpr double kPi = 3.14159265358979323846;
 
 int nearest_node(const Mesh& mesh, const Vector3d& x) {
   int best = 0;

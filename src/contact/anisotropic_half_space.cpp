@@ -3,13 +3,12 @@
 #include <cmath>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "material/stiffness_contraction.hpp"
 
 namespace si {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Willis' shape: A = exp(S), S = [[u, v], [v, -u]] (symmetric, traceless: det A = 1), a smooth
 // chart around the circle u = v = 0.

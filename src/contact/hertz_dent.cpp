@@ -2,13 +2,13 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 
 namespace si {
 
 DentValue hertz_dent(double r, double alpha, double radius) {
   SI_REQUIRE(radius > 0 && r >= 0, "hertz_dent: the radius must be positive and r >= 0");
-  constexpr double kPi = 3.14159265358979323846;
   const double depth = std::abs(alpha);
   const double a = std::sqrt(radius * depth);
   DentValue d;

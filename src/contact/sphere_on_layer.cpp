@@ -2,13 +2,12 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "section/gauss_legendre.hpp"
 
 namespace si {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Gauss-Legendre on [0, b].
 void gauss_on(double b, int n, Eigen::VectorXd& t, Eigen::VectorXd& w) {

@@ -4,13 +4,13 @@
 
 #include "contact/anisotropic_half_space.hpp"
 #include "contact/layer_compliance.hpp"
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "section/gauss_legendre.hpp"
 
 namespace si {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMapScale = 2.0;      // L of the map x = L (1 + xi) / (1 - xi)
 constexpr int kKappaDegree = 96;       // Chebyshev degree of kappa in xi
 constexpr int kTransformDegree = 160;  // and of its cosine transform in y (y_max ~ 24)

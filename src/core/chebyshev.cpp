@@ -2,12 +2,11 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 
 namespace si {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Coefficients c_k of sum c_k T_k(t) through the values at t_j = cos(pi j / n): the DCT-I with
 // halved end terms (direct O(n^2) sum: n is small).

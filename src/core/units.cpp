@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/constants.hpp"
 #include "core/decimal_number.hpp"
 #include "core/error.hpp"
 #include "core/value_excerpt.hpp"
@@ -19,8 +20,6 @@ struct UnitDef {
   Dimension dim;
   double to_internal;  // multiply a value in this unit by this factor to get internal units
 };
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Factors to mm, MPa, N, N*mm, deg, N/mm. Imperial units are exact by definition
 // (1 in = 25.4 mm, 1 lbf = 4.4482216152605 N).

@@ -2,13 +2,13 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 
 namespace si {
 namespace {
 
 constexpr double kGPa = 1000.0;  // MPa per GPa
-constexpr double kPi = 3.14159265358979323846;
 
 struct LibraryEntry {
   const char* name;

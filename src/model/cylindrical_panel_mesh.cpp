@@ -3,16 +3,13 @@
 #include <cmath>
 #include <string>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "model/mesh_quality.hpp"
 #include "model/structured_grid.hpp"
 
 namespace si {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
+namespace {}  // namespace
 
 Mesh cylindrical_panel_mesh(double radius, double length, double half_angle_deg, int n_axial,
                             int n_circ, PanelPart part) {

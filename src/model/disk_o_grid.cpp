@@ -5,14 +5,13 @@
 #include <functional>
 #include <string>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "model/graded_stations.hpp"
 #include "model/structured_grid.hpp"
 
 namespace si {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Radial elements are kept at most this many times longer than their tangential size.
 constexpr double kMaxRadialStretch = 4;

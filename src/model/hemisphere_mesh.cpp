@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "model/mesh_quality.hpp"
 #include "model/structured_grid.hpp"
@@ -10,7 +11,6 @@
 namespace si {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kHoleDeg = 18;  // MacNeal & Harder 1985: hole of 18 deg about the pole
 
 // Unit vector at azimuth `psi` (from +x towards +y) and latitude `lat`; the quarter's sides are

@@ -5,13 +5,12 @@
 #include <map>
 #include <sstream>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "model/point_locator.hpp"
 
 namespace si {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double angle_deg(const Vector3d& a, const Vector3d& b) {
   return std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / kPi;

@@ -3,14 +3,13 @@
 #include <cmath>
 #include <string>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "model/mesh_quality.hpp"
 #include "model/structured_grid.hpp"
 
 namespace si {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 void require_positive(double value, const char* key) {
   if (!(std::isfinite(value) && value > 0)) {

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/constants.hpp"
 #include "core/did_you_mean.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
@@ -22,8 +23,6 @@
 
 namespace si {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Smallest even number of equal elements (>= 2) of side at most h over a length.
 int even_count(double length, double h) {

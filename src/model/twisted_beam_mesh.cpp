@@ -3,16 +3,13 @@
 #include <cmath>
 #include <string>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "model/mesh_quality.hpp"
 #include "model/structured_grid.hpp"
 
 namespace si {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
+namespace {}  // namespace
 
 Mesh twisted_beam_mesh(const TwistedBeamSpec& spec) {
   const auto positive = [](double x) { return std::isfinite(x) && x > 0; };

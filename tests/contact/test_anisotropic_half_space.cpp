@@ -20,6 +20,7 @@
 #include "../verification_record.hpp"
 #include "contact/anisotropic_half_space.hpp"
 #include "contact/layer_compliance.hpp"
+#include "core/constants.hpp"
 #include "material/material.hpp"
 #include "material/ply_rotation.hpp"
 #include "section/homogenised_stiffness.hpp"
@@ -27,7 +28,6 @@
 namespace si {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 const char* const kTable = "anisotropic-indentation";
 
 Material paper_ply() {

@@ -12,12 +12,12 @@
 #include <cmath>
 
 #include "../verification_record.hpp"
+#include "core/constants.hpp"
 #include "section/gauss_legendre.hpp"
 
 namespace si {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadius = 12.7;    // mm, the sphere
 constexpr double kModulus = 7e4;    // E*, MPa: cancels in the profile
 constexpr double kApproach = 0.02;  // alpha, mm: a = 0.504 mm

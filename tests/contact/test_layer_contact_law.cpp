@@ -19,6 +19,7 @@
 #include "contact/layer_contact_law.hpp"
 #include "contact/sphere_on_layer.hpp"
 #include "contact/support_kernel.hpp"
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "material/material.hpp"
 #include "material/ply_rotation.hpp"
@@ -26,7 +27,6 @@
 namespace si {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 const char* const kTable = "anisotropic-indentation";
 constexpr double kE = 70000, kNu = 0.3;
 

@@ -9,14 +9,13 @@
 #include <cmath>
 
 #include "../section/laminate_fixtures.hpp"
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "material/material_library.hpp"
 #include "section/clt_section.hpp"
 
 namespace si {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(DelaminationThreshold, IsotropicPlateIsDaviesZhangInEAndH) {
   const double E = 70000, nu = 0.3, h = 4, G = 0.8;

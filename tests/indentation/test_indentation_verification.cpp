@@ -20,6 +20,7 @@
 #include <string>
 
 #include "../verification_record.hpp"
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "indentation_test_support.hpp"
 
@@ -32,8 +33,6 @@ using testing::isotropic_indentation_case;
 using testing::kIsotropicE;
 using testing::kIsotropicNu;
 using testing::tight_kinsol_settings;
-
-constexpr double kPi = 3.14159265358979323846;
 
 // One assembly thread: the CI machine is shared, and OpenMP threads on busy cores slow the
 // nonlinear solves down by several times.

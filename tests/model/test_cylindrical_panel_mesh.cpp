@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "mesh_test_support.hpp"
 
 namespace si {
@@ -12,8 +13,6 @@ namespace {
 using testing::expect_input_error;
 using testing::expect_set_is;
 using testing::observed_order;
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Scordelis-Lo roof (linear.md): R = 25, L = 50, half-angle 40 deg.
 constexpr double kR = 25, kL = 50, kHalfDeg = 40;

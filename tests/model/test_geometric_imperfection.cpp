@@ -9,6 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/constants.hpp"
 #include "mesh_test_support.hpp"
 #include "model/plate_meshes.hpp"
 
@@ -17,7 +18,6 @@ namespace {
 
 using testing::observed_order;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kL = 100.0;   // mm
 constexpr double kBump = 0.5;  // mm: slopes up to pi a / L = 0.016
 

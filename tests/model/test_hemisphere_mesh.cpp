@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "mesh_test_support.hpp"
 
 namespace si {
@@ -11,7 +12,6 @@ namespace {
 
 using testing::expect_set_is;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kR = 10;  // MacNeal & Harder 1985 (linear.md)
 
 TEST(HemisphereMesh, NodesOnTheSphereWithExactDirectorsAndSets) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "mesh_test_support.hpp"
 #include "model/mesh_quality.hpp"
 
@@ -13,8 +14,6 @@ namespace {
 using testing::expect_input_error;
 using testing::expect_set_is;
 using testing::observed_order;
-
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(RectangularPlateMesh, AreaEdgesAndCentre) {
   const Mesh mesh = rectangular_plate_mesh(10, 1, 16, 2);  // Sze cantilever strip, 16 x 1 doubled

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "mesh_test_support.hpp"
 #include "model/mesh_quality.hpp"
 
@@ -16,8 +17,6 @@ using testing::centroid;
 using testing::expect_input_error;
 using testing::longest_edge;
 using testing::observed_order;
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Paper cap (paper-notes P8): c = 25 mm, R = 80.9 mm; exact area 2 pi R H.
 double exact_area(const SphericalCapMeshSpec& spec) {

@@ -4,12 +4,11 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "mesh_test_support.hpp"
 
 namespace si {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Area of the helicoid (x, w cos a, w sin a), |w| <= b, a' = k: L (b sqrt(1 + k^2 b^2) +
 // asinh(k b) / k).

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "laminate_fixtures.hpp"
 #include "navier_rm_plate.hpp"
 #include "pagano_plate.hpp"
@@ -22,8 +23,6 @@ namespace {
 
 using testing::NavierRmPlate;
 using testing::PaganoPlate;
-
-constexpr double kPi = 3.14159265358979323846;
 
 Laminate pagano_layup() {
   return testing::make_laminate(testing::pagano_material(), 1.0 / 3.0, {0, 90, 0});

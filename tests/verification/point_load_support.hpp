@@ -7,13 +7,12 @@
 #include <vector>
 
 #include "analysis/static_run.hpp"
+#include "core/constants.hpp"
 #include "io/case_file.hpp"
 #include "model/assembler.hpp"
 #include "model/shell_model.hpp"
 
 namespace si::testing {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Isotropic material of the point-load tests (point-loads.md 4.2 uses E = 70 GPa, nu = 0.3).
 constexpr double kE = 70000.0;  // MPa

@@ -10,6 +10,7 @@
 
 #include "analysis/load_problem.hpp"
 #include "continuation/settings.hpp"
+#include "core/constants.hpp"
 #include "model/cylindrical_panel_mesh.hpp"
 #include "shell/shell_element.hpp"
 #include "shell/shell_law.hpp"
@@ -43,7 +44,6 @@ struct SzeRoof {
 // mid-plane) with n x n mitc4 elements and P/4 at the centre; the centre's downward deflection
 // is the monitor "minus_w_center".
 inline SzeRoof make_sze_roof(double thickness, int n, int threads = 1) {
-  constexpr double kPi = 3.14159265358979323846;
   SzeRoof r;
   r.mesh = cylindrical_panel_mesh(kRoofRadius, kRoofLength, kRoofHalfAngleRad * 180 / kPi, n, n,
                                   PanelPart::kQuarter);

@@ -26,6 +26,7 @@
 
 #include "../section/laminate_fixtures.hpp"
 #include "../verification_record.hpp"
+#include "core/constants.hpp"
 #include "model/plate_meshes.hpp"
 #include "section/clt_section.hpp"
 #include "section/transverse_shear.hpp"
@@ -33,8 +34,6 @@
 
 namespace si::verification {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Normalised centre deflection w_bar of a plate of thickness h = 1, side a = S, on an n x n
 // quarter mesh. q0 = S^-4 keeps w ~ h / 100 and the rotations small (the linear solution

@@ -28,6 +28,7 @@
 #include "analysis/local_contact.hpp"
 #include "contact/hertz_dent.hpp"
 #include "contact/local_contact_law.hpp"
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "nonlinear_benchmark_support.hpp"
 
@@ -40,7 +41,6 @@ using testing::kIsotropicE;
 using testing::kIsotropicNu;
 using testing::tight_kinsol_settings;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kSphere = 12.7;  // mm, the sphere radius
 const char* const kTable = "local-indentation";
 const char* const kPlateShell = "{type: flat_circular_plate, radius: 25 mm, edge: clamped}";

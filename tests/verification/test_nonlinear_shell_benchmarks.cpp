@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "model/plate_meshes.hpp"
 #include "nonlinear_benchmark_support.hpp"
 #include "sze_tables.hpp"
@@ -29,7 +30,6 @@ using verification::kSze33WOuter;
 using verification::mean_displacement;
 using verification::Tolerance;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr const char* kSzeS4R = "Sze, Liu & Lo 2004, ABAQUS S4R table (nonlinear.md)";
 
 // Load factors 0.05, 0.10, ..., 1.00 (the tabulated levels of sections 3.1 and 3.2).

@@ -14,6 +14,7 @@
 
 #include "../section/laminate_fixtures.hpp"
 #include "../section/pagano_plate.hpp"
+#include "core/constants.hpp"
 #include "model/nodal_resultants.hpp"
 #include "model/patch_fit.hpp"
 #include "model/plate_meshes.hpp"
@@ -23,8 +24,6 @@
 
 namespace si::verification {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Laminate pagano_layup() {
   return testing::make_laminate(testing::pagano_material(), 1.0 / 3.0, {0, 90, 0});

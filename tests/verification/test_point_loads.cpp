@@ -24,7 +24,6 @@ namespace {
 using testing::deflection;
 using testing::isotropic_case;
 using testing::kNu;
-using testing::kPi;
 using testing::plate_rigidity;
 using testing::run_static_case;
 using testing::StaticRun;
