@@ -12,10 +12,9 @@ int sign(double v) {
   return v > 0.0 ? 1 : (v < 0.0 ? -1 : 0);
 }
 
-// A point at sigma; if it cannot be had (regula falsi lands exactly on a root where J is singular,
-// e.g. a bifurcation whose indicator is linear), a point slightly off it towards the bracket's
-// middle, then the middle itself.
-// sigma is set to where the point was found.
+// A point at sigma; if it cannot be had (the interpolation lands exactly on a root where J is
+// singular, e.g. a bifurcation whose indicator is linear), a point slightly off it towards the
+// bracket's middle, then the middle itself. sigma is set to where the point was found.
 bool solve_near(const SegmentSolver& solve, double& sigma, double middle, const SegmentChord* chord,
                 TangentPoint& out) {
   if (solve(sigma, chord, out)) return true;
@@ -81,10 +80,9 @@ double locate_root(const std::function<double(const TangentPoint&)>& g, const Se
       c = a;
       d = e = b.sigma - a.sigma;
     }
-    if (std::abs(c.g) < std::abs(b.g)) {  // b: the end nearer the root
-      a = b;
-      b = c;
-      c = a;
+    if (std::abs(c.g) < std::abs(b.g)) {  // b: the end nearer the root, a the previous b
+      std::swap(b, c);
+      a = c;
     }
     const double half_width = 0.5 * (c.sigma - b.sigma);
     if (std::abs(half_width) <= tolerance || small_enough(b)) break;

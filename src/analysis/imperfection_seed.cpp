@@ -54,11 +54,10 @@ ImperfectionSeed seed_imperfection(const IndentationCase& c, int threads,
   cont::Vector z = last_z;
   double h = r.points.back().state.depth;
   for (const cont::Event& e : r.events) {
-    if (e.type != cont::EventType::kStabilityChange || e.x.size() == 0 ||
-        e.x.size() > problem.size())
-      continue;
-    z = cont::Vector::Zero(problem.size());
-    z.head(e.x.size()) = e.x;
+    if (e.type != cont::EventType::kStabilityChange) continue;
+    const cont::Vector at = in_present_layout(e.x, problem);  // the candidates may have grown
+    if (at.size() == 0) continue;
+    z = at;
     h = e.p;
     seed.at_stability_change = true;
     seed.criticality = e.criticality;

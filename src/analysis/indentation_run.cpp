@@ -403,7 +403,8 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   settings.checkpoint_attachment = [&] { return path_attachment(*s.problem, r, control); };
   PathRecorder rec(r, callback);
   // path.branch_switch: the fundamental branch ends at its first bifurcation (the point past it,
-  // on the fundamental branch, is not kept), the switched one at its first stability change.
+  // on the fundamental branch, is not kept), the switched one where it meets another branch
+  // (first_change).
   const std::optional<BranchSwitchSpec> switching = s.spec.path.branch_switch;
   if (switching) settings.checkpoint_interval = 0;  // a resume could not tell the branches apart
   const cont::Callback on_point = [&](const cont::Point& pt, const cont::Branch& branch) {
