@@ -81,12 +81,12 @@ int PathVtus::after_run(IndentationSetup& s, const PathResult& r) {
     if (!written) write(name, s, p.evaluate(r.final_unknowns, last.state.depth), r.final_unknowns);
   }
   // The located events, at their own point. The problem may have grown its candidate set since
-  // an event: the appended multipliers are zero there.
+  // an event: in_present_layout puts the new multipliers (zero) before a local law's approach.
   int events = 0;
   for (const cont::Event& e : r.events) {
-    if (!e.located || e.x.size() == 0 || e.x.size() > p.size()) continue;
-    cont::Vector z = cont::Vector::Zero(p.size());
-    z.head(e.x.size()) = e.x;
+    if (!e.located || e.x.size() == 0) continue;
+    const cont::Vector z = in_present_layout(e.x, p);
+    if (z.size() == 0) continue;
     const std::string name = numbered("event_%02d.vtu", ++events);
     if (e.type == cont::EventType::kStabilityChange) {
       const Eigen::MatrixXd mode = mode_translations(p.dofs(), e.mode, s.model.mesh.num_nodes());

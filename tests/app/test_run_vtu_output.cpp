@@ -3,10 +3,12 @@
 // listed once each in path.pvd in depth order; binary and mirrored on request.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -115,6 +117,50 @@ TEST(RunVtuOutput, LocatedEventHasItsFileAtItsDepth) {
   EXPECT_NEAR(entries[2].first, 0.3, 1e-12);
   EXPECT_TRUE(contains(read_file(dir / "out" / "event_01.vtu"), "max_stress_index_ply1"));
   EXPECT_FALSE(fs::exists(dir / "out" / "event_02.vtu"));
+}
+
+// A point field of a VTU written in ascii: its values in node order.
+std::vector<double> ascii_point_field(const fs::path& vtu, const std::string& name) {
+  const std::string text = read_file(vtu);
+  std::smatch m;
+  const std::regex array("Name=\"" + name + "\"[^>]*>([^<]*)<");
+  if (!std::regex_search(text, m, array)) return {};
+  std::vector<double> values;
+  std::istringstream in(m[1].str());
+  for (double v; in >> v;) values.push_back(v);
+  return values;
+}
+
+// With a local law the approach alpha is the last unknown. The candidate set grows after this
+// early event (0.013 mm, the apex alone in contact): the event's file must hold the event's
+// state in the grown layout, the new candidates' multipliers zero and alpha last. Writing the
+// old vector at the head put alpha into the first new candidate's contact force (seen: 0.009
+// "N" at node 5). The quarter model's forces add up to a quarter of the event's force.
+TEST(RunVtuOutput, EventFileWithALocalLawHoldsTheEventsContactForces) {
+  const fs::path dir = fresh_dir("run_vtu_event_local");
+  const fs::path c =
+      write_case(dir, cap_case("{depth_max: 1.5 mm, step: 0.1 mm}", "{vtu_every: 1000}",
+                               "contact: {local: hertz}\ndamage: {criteria: [max_stress]}\n"));
+  const auto r = run_cli("run '" + c.string() + "' --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto events = nlohmann::json::parse(read_file(dir / "out" / "events.json"));
+  ASSERT_TRUE(events[0].at("located").get<bool>()) << events.dump(1);
+  const double force = events[0].at("force_N").get<double>();
+  const std::vector<double> at_event =
+      ascii_point_field(dir / "out" / "event_01.vtu", "contact_force");
+  const std::vector<double> last =
+      ascii_point_field(dir / "out" / "path_0008.vtu", "contact_force");
+  ASSERT_FALSE(at_event.empty());
+  ASSERT_EQ(at_event.size(), last.size());
+  // The set grew: more nodes carry force at the end than were candidates at the event.
+  const auto loaded = [](const std::vector<double>& f) {
+    return std::count_if(f.begin(), f.end(), [](double v) { return v != 0.0; });
+  };
+  EXPECT_EQ(loaded(at_event), 1);
+  EXPECT_GT(loaded(last), 1);
+  double sum = 0.0;
+  for (double v : at_event) sum += v;
+  EXPECT_NEAR(4.0 * sum, force, 1e-9 * force);
 }
 
 TEST(RunVtuOutput, MirrorOfAFullModelAndDepthsBeyondThePathAreRefused) {
