@@ -245,8 +245,8 @@ void DamageProbe::build_recovery_map() {
   const bool refined = spec_.recovery == StressRecovery::kRefined;
   const int inputs = recovery_inputs(spec_.recovery);
   for (int j = 0; j < inputs; ++j) {
-    const std::vector<RecoveredPoint> r =
-        recover_through_thickness(section_, unit_state(j, inputs, refined), kPointsPerPly);
+    const std::vector<RecoveredPoint> r = recover_through_thickness(
+        section_, unit_state(j, inputs, refined), kPointsPerPly, EquilibriumCheck::kSkipped);
     if (j == 0) {
       recovery_map_ = Eigen::MatrixXd::Zero(6 * static_cast<Eigen::Index>(r.size()), inputs);
       recovered_template_ = r;
@@ -258,7 +258,6 @@ void DamageProbe::build_recovery_map() {
     p.strain.setZero();
     p.stress.setZero();
     p.warping.setZero();
-    p.sigma33_equilibrium.reset();
   }
 }
 

@@ -187,8 +187,8 @@ double sigma33_by_equilibrium(const VamSection& section, const PlateState& mid,
 
 }  // namespace
 
-RecoveredPoint recover_point(const VamSection& section, const PlateState& state, int ply,
-                             double x3) {
+RecoveredPoint recover_point(const VamSection& section, const PlateState& state, int ply, double x3,
+                             EquilibriumCheck check) {
   const PlateState mid = to_mid_surface(section, state);
   const NormalLinePoint pt = section.mesh.point(x3, ply);
   const Eigen::VectorXd V = element_warping(section, mid, pt);
@@ -206,12 +206,14 @@ RecoveredPoint recover_point(const VamSection& section, const PlateState& state,
     if (mid.d3R) out.stress.segment<2>(3) += refined_transverse_shear(section, mid, pt, Y);
   }
   out.warping = shape_matrix(pt) * V;
-  if (mid.d2R) out.sigma33_equilibrium = sigma33_by_equilibrium(section, mid, pt);
+  if (mid.d2R && check == EquilibriumCheck::kComputed)
+    out.sigma33_equilibrium = sigma33_by_equilibrium(section, mid, pt);
   return out;
 }
 
 std::vector<RecoveredPoint> recover_through_thickness(const VamSection& section,
-                                                      const PlateState& state, int points_per_ply) {
+                                                      const PlateState& state, int points_per_ply,
+                                                      EquilibriumCheck check) {
   if (points_per_ply < 2)
     throw_input("through-thickness recovery needs at least 2 points per ply (both ply faces)",
                 Where{"", "points_per_ply", std::to_string(points_per_ply), 0});
@@ -222,7 +224,7 @@ std::vector<RecoveredPoint> recover_through_thickness(const VamSection& section,
     for (int i = 0; i < points_per_ply; ++i) {
       const double x3 =
           (i + 1 == points_per_ply) ? top : bottom + (top - bottom) * i / (points_per_ply - 1.0);
-      points.push_back(recover_point(section, state, k, x3));
+      points.push_back(recover_point(section, state, k, x3, check));
     }
   }
   return points;

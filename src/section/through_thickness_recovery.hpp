@@ -60,14 +60,20 @@ struct RecoveredPoint {
   std::optional<double> sigma33_equilibrium;
 };
 
+// Whether RecoveredPoint::sigma33_equilibrium is computed: an integral through the thickness
+// below the point, half the cost of a refined recovery; a linear map built from unit states
+// (analysis/damage_probe.cpp) reads the stresses only.
+enum class EquilibriumCheck { kComputed, kSkipped };
+
 // The 3-D fields at x3 inside ply `ply` (at an interface, the value on that ply's side).
 // Throws an input si::Error if x3 is not inside the ply.
-RecoveredPoint recover_point(const VamSection& section, const PlateState& state, int ply,
-                             double x3);
+RecoveredPoint recover_point(const VamSection& section, const PlateState& state, int ply, double x3,
+                             EquilibriumCheck check = EquilibriumCheck::kComputed);
 
 // points_per_ply (>= 2) equally spaced points in every ply, both ply faces included, so each
 // interface appears twice (once per ply); bottom ply first.
-std::vector<RecoveredPoint> recover_through_thickness(const VamSection& section,
-                                                      const PlateState& state, int points_per_ply);
+std::vector<RecoveredPoint> recover_through_thickness(
+    const VamSection& section, const PlateState& state, int points_per_ply,
+    EquilibriumCheck check = EquilibriumCheck::kComputed);
 
 }  // namespace si
