@@ -127,15 +127,26 @@ std::vector<Indicator> make_indicators(const Settings& settings,
   return out;
 }
 
-AnalysisNeeds analysis_needs(const std::vector<Indicator>& indicators, const Settings& settings) {
+AnalysisNeeds analysis_needs(const std::vector<Indicator>& indicators, const Settings& settings,
+                             const std::vector<std::string>& monitor_names) {
   AnalysisNeeds needs;
+  std::vector<int>& which = needs.derivative_monitors;
   for (const auto& ind : indicators) {
-    needs.slopes |= ind.type == EventType::kMonitorMax || is_feature(ind.type);
+    const bool derivatives = ind.type == EventType::kMonitorMax || is_feature(ind.type);
+    needs.slopes |= derivatives;
     needs.curvatures |= is_feature(ind.type);
     needs.curvature_errors |= is_feature(ind.type);
     // The feature detector refuses sign changes across a signature change.
     needs.signature |= ind.type == EventType::kSignatureChange || is_feature(ind.type);
+    if (derivatives)
+      for (int m : {ind.monitor, ind.against})
+        if (m >= 0) which.push_back(m);
   }
+  for (const auto& name : settings.slope_monitors)
+    which.push_back(find_monitor(monitor_names, name, "slope_monitors"));
+  needs.slopes |= !settings.slope_monitors.empty();
+  std::sort(which.begin(), which.end());
+  which.erase(std::unique(which.begin(), which.end()), which.end());
   needs.stability_modes = settings.stability_modes;
   return needs;
 }
@@ -185,6 +196,8 @@ std::vector<Event> find_events(const std::vector<Indicator>& indicators,
       found = stability_events(ind, start, end, solve.with_stability, settings);
     else if (is_feature(ind.type))
       found = feature_events(ind, monitor_names, start, end, solve.plain, settings, scales);
+    else if (ind.type == EventType::kZeroCrossing)
+      found = simple_events(ind, monitor_names, start, end, solve.monitors_only, settings);
     else
       found = simple_events(ind, monitor_names, start, end, solve.plain, settings);
     for (auto& event : found) {

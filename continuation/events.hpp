@@ -40,7 +40,8 @@ std::vector<Indicator> make_indicators(const Settings& settings,
                                        const std::vector<std::string>& monitor_names);
 
 // What point_analysis must compute for these indicators (stability: Settings::stability_modes).
-AnalysisNeeds analysis_needs(const std::vector<Indicator>& indicators, const Settings& settings);
+AnalysisNeeds analysis_needs(const std::vector<Indicator>& indicators, const Settings& settings,
+                             const std::vector<std::string>& monitor_names);
 
 // The extent of each monitor and of p over the accepted points so far: the curve's own scale for
 // the curve-feature detector.
@@ -62,10 +63,12 @@ Event event_at(EventType type, const Indicator& indicator,
 
 // The solvers of the points inside a step: `plain` for every event but a stability change, whose
 // location needs each point's stability (`with_stability`; the same as plain when the
-// continuation computes none).
+// continuation computes none), and a monitor's zero or level crossing, which reads the monitors
+// alone (`monitors_only`: no tangent, no factorization at the trial points).
 struct SegmentSolvers {
   SegmentSolver plain;
   SegmentSolver with_stability;
+  SegmentSolver monitors_only;
 };
 
 // Events whose indicators change between a and b (b at local coordinate sigma_b), located,

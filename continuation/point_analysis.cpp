@@ -2,15 +2,25 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace si::cont {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-Vector monitors_at(Problem& problem, const Vector& x, double p, const Vector& dx, double dp,
-                   double h) {
-  return problem.monitors(x + h * dx, p + h * dp);
+// The monitors in `which` at u + h du (du = (dx, dp)).
+Vector monitors_at(Problem& problem, const Point& pt, const Vector& dx, double dp, double h,
+                   const std::vector<int>& which) {
+  return problem.monitor_subset(pt.x + h * dx, pt.p + h * dp, which);
+}
+
+// A full-length monitor vector: NaN except at `which`, whose values are `subset`'s.
+Vector scattered(const Vector& subset, const std::vector<int>& which, Eigen::Index size) {
+  Vector out = Vector::Constant(size, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < which.size(); ++i)
+    out(which[i]) = subset(static_cast<Eigen::Index>(i));
+  return out;
 }
 
 // Second derivative of the branch u'' = (x'', p''), from F_uu[t, t] by a second difference with
@@ -27,14 +37,15 @@ bool branch_curvature(Problem& problem, BorderedSolver& bordered, const TangentP
   return bordered.solve(tp.tangent_x, pt.tangent_p, xpp, 0.0, ppp);
 }
 
-// m'' and p'' with second-difference step h2 (first differences along u'' with h1). false when
-// u'' cannot be computed.
+// m'' of the monitors in `which` (m0: their values at the point) and p'', with second-difference
+// step h2 (first differences along u'' with h1). false when u'' cannot be computed.
 bool second_derivatives(Problem& problem, BorderedSolver& bordered, const TangentPoint& tp,
-                        const Vector& f_zero, double h1, double h2, Vector& mpp, double& ppp) {
+                        const Vector& f_zero, const std::vector<int>& which, const Vector& m0,
+                        double h1, double h2, Vector& mpp, double& ppp) {
   const Point& pt = tp.point;
   const Vector& t = tp.tangent_x;
-  mpp = (monitors_at(problem, pt.x, pt.p, t, pt.tangent_p, h2) - 2.0 * pt.monitors +
-         monitors_at(problem, pt.x, pt.p, t, pt.tangent_p, -h2)) /
+  mpp = (monitors_at(problem, pt, t, pt.tangent_p, h2, which) - 2.0 * m0 +
+         monitors_at(problem, pt, t, pt.tangent_p, -h2, which)) /
         (h2 * h2);
   Vector xpp;
   if (!branch_curvature(problem, bordered, tp, f_zero, h2, xpp, ppp)) return false;
@@ -44,8 +55,8 @@ bool second_derivatives(Problem& problem, BorderedSolver& bordered, const Tangen
     const Vector e_x = xpp / size;
     const double e_p = ppp / size;
     mpp += size *
-           (monitors_at(problem, pt.x, pt.p, e_x, e_p, h1) -
-            monitors_at(problem, pt.x, pt.p, e_x, e_p, -h1)) /
+           (monitors_at(problem, pt, e_x, e_p, h1, which) -
+            monitors_at(problem, pt, e_x, e_p, -h1, which)) /
            (2.0 * h1);
   }
   return true;
@@ -54,34 +65,44 @@ bool second_derivatives(Problem& problem, BorderedSolver& bordered, const Tangen
 void monitor_derivatives(Problem& problem, BorderedSolver& bordered, const AnalysisNeeds& needs,
                          TangentPoint& tp) {
   Point& pt = tp.point;
+  const std::vector<int>& which = needs.derivative_monitors;
+  const Eigen::Index n = pt.monitors.size();
   const double scale = 1.0 + std::sqrt(bordered.inner(pt.x, pt.p, pt.x, pt.p));
   const double h1 = std::cbrt(kEps) * scale;
   const double h2 = std::sqrt(std::sqrt(kEps)) * scale;
   const Vector& t = tp.tangent_x;
   const double tp_p = pt.tangent_p;
-  pt.monitor_slopes = (monitors_at(problem, pt.x, pt.p, t, tp_p, h1) -
-                       monitors_at(problem, pt.x, pt.p, t, tp_p, -h1)) /
-                      (2.0 * h1);
+  const Vector slopes = (monitors_at(problem, pt, t, tp_p, h1, which) -
+                         monitors_at(problem, pt, t, tp_p, -h1, which)) /
+                        (2.0 * h1);
+  pt.monitor_slopes = scattered(slopes, which, n);
   if (!(needs.curvatures || needs.curvature_errors)) return;
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  Vector m0(static_cast<Eigen::Index>(which.size()));
+  for (std::size_t i = 0; i < which.size(); ++i)
+    m0(static_cast<Eigen::Index>(i)) = pt.monitors(which[i]);
   Vector f_zero;
+  Vector mpp;
   double ppp = 0.0;
   if (!problem.residual(pt.x, pt.p, f_zero) ||
-      !second_derivatives(problem, bordered, tp, f_zero, h1, h2, pt.monitor_curvatures, ppp)) {
-    pt.monitor_curvatures = Vector::Constant(pt.monitors.size(), nan);
+      !second_derivatives(problem, bordered, tp, f_zero, which, m0, h1, h2, mpp, ppp)) {
+    pt.monitor_curvatures = Vector::Constant(n, nan);
     return;
   }
+  pt.monitor_curvatures = scattered(mpp, which, n);
   if (!needs.curvature_errors) return;
   Vector mpp_coarse;
   double ppp_coarse = 0.0;
   pt.parameter_curvature = ppp;
-  if (!second_derivatives(problem, bordered, tp, f_zero, h1, 2.0 * h2, mpp_coarse, ppp_coarse)) {
-    pt.monitor_curvature_errors = Vector::Constant(pt.monitors.size(), nan);
+  if (!second_derivatives(problem, bordered, tp, f_zero, which, m0, h1, 2.0 * h2, mpp_coarse,
+                          ppp_coarse)) {
+    pt.monitor_curvature_errors = Vector::Constant(n, nan);
     pt.parameter_curvature_error = nan;
     return;
   }
-  const Vector roundoff = 4.0 * kEps * pt.monitors.cwiseAbs() / (h2 * h2);
-  pt.monitor_curvature_errors = (pt.monitor_curvatures - mpp_coarse).cwiseAbs().cwiseMax(roundoff);
+  const Vector roundoff = 4.0 * kEps * m0.cwiseAbs() / (h2 * h2);
+  pt.monitor_curvature_errors =
+      scattered((mpp - mpp_coarse).cwiseAbs().cwiseMax(roundoff), which, n);
   pt.parameter_curvature_error = std::abs(ppp - ppp_coarse);
 }
 
@@ -107,6 +128,12 @@ bool analyse_point(Problem& problem, BorderedSolver& bordered, const Vector& x, 
   Point& pt = tp.point;
   pt.x = x;
   pt.p = p;
+  if (!needs.tangent) {
+    pt.monitors = problem.monitors(x, p);
+    pt.signature = needs.signature ? problem.signature(x, p) : std::vector<int>{};
+    out = std::move(tp);
+    return true;
+  }
   if (!bordered.setup(x, p)) return false;
   pt.jacobian_sign = problem.jacobian_sign();
   const Vector ref = ref_x.size() == x.size() ? ref_x : Vector();

@@ -25,6 +25,13 @@ struct TangentPoint {
 };
 
 struct AnalysisNeeds {
+  // false: the monitors alone (and the signature if asked), no factorization: what the location
+  // of a monitor's level crossing reads at its trial points. The tangent, jacobian_sign and every
+  // derivative are then left at their defaults, and the Jacobian is not factored at (x, p).
+  bool tangent = true;
+  // The derivatives below are computed for these monitors (ascending indices), NaN for the rest:
+  // a monitor's derivative costs two or more evaluations of the monitors off the branch.
+  std::vector<int> derivative_monitors;
   bool slopes = false;            // monitor_slopes
   bool curvatures = false;        // monitor_curvatures (implies slopes)
   bool curvature_errors = false;  // + their error estimates and p'' (implies curvatures)

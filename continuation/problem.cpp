@@ -27,6 +27,13 @@ Vector Problem::monitors(const Vector& /*x*/, double /*p*/) {
   return Vector();
 }
 
+Vector Problem::monitor_subset(const Vector& x, double p, const std::vector<int>& which) {
+  const Vector all = monitors(x, p);
+  Vector out(static_cast<Eigen::Index>(which.size()));
+  for (std::size_t i = 0; i < which.size(); ++i) out(static_cast<Eigen::Index>(i)) = all(which[i]);
+  return out;
+}
+
 std::vector<int> Problem::signature(const Vector& /*x*/, double /*p*/) {
   return {};
 }

@@ -43,6 +43,11 @@ class Problem {
   // the branch are taken by finite differences off the branch (docs/theory/continuation.md).
   virtual std::vector<std::string> monitor_names() const;
   virtual Vector monitors(const Vector& x, double p);
+  // The monitors listed in `which` (indices into monitor_names(), ascending), in that order: the
+  // derivatives along the branch need only some of them, at points off the branch. A problem
+  // with monitors of very different cost overrides it to compute only those; default: a
+  // selection from monitors(x, p).
+  virtual Vector monitor_subset(const Vector& x, double p, const std::vector<int>& which);
 
   // A discrete signature (e.g. the contact set) whose change between accepted points is an
   // event; default empty.

@@ -111,6 +111,9 @@ struct Settings {
   // Extrema of dm/dp along the branch, the inflections of m against the parameter (slope_max,
   // slope_min events): for a force monitor, slope_min is the minimum tangent stiffness.
   std::vector<std::string> slope_extremum_monitors;
+  // Monitors whose slope dm/ds the caller wants at every point (Point::monitor_slopes), besides
+  // those the events above need; the others' slopes are NaN, their off-branch evaluations saved.
+  std::vector<std::string> slope_monitors;
   // The curve-feature detector (inflections and slope extrema; docs/theory/continuation.md,
   // "Curve features"): a point's indicator g has a sign only when |g| exceeds noise_factor times
   // its error estimate and the curvature of the curve in its own scale (each coordinate divided

@@ -32,7 +32,7 @@ class Tracer {
         callback_(callback) {
     branch_.monitor_names = problem.monitor_names();
     indicators_ = make_indicators(settings, branch_.monitor_names);
-    needs_ = analysis_needs(indicators_, settings);
+    needs_ = analysis_needs(indicators_, settings, branch_.monitor_names);
     if (settings.stability_modes > 0 && !problem.provides_stability())
       throw std::invalid_argument(
           "continuation.stability_modes = " + std::to_string(settings.stability_modes) +
@@ -238,9 +238,12 @@ class Tracer {
     // step).
     AnalysisNeeds without_stability = needs_;
     without_stability.stability_modes = 0;
-    const auto events = find_events(indicators_, branch_.monitor_names, a, b, step.sigma_end,
-                                    {segment(step, without_stability), segment(step)}, settings_,
-                                    index, bordered_, scales_);
+    AnalysisNeeds monitors_only;
+    monitors_only.tangent = false;
+    const auto events =
+        find_events(indicators_, branch_.monitor_names, a, b, step.sigma_end,
+                    {segment(step, without_stability), segment(step), segment(step, monitors_only)},
+                    settings_, index, bordered_, scales_);
     branch_.points.push_back(b.point);
     branch_.events.insert(branch_.events.end(), events.begin(), events.end());
     state_.has_previous = true;

@@ -259,6 +259,7 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   c.max_steps = static_cast<int>(20 * path.depth_max / path.step) + 100;
   c.newton = path_newton_settings(s);
   c.extremum_monitors = {column_name(PathColumn::kForce)};
+  c.slope_monitors = slope_monitor_names(run_columns(monitored_criteria(s.spec)));
   // Damage onset: each monitored failure index reaching 1 (analysis/damage_results.hpp).
   if (s.spec.damage)
     for (Criterion k : s.spec.damage->criteria)

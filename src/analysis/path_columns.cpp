@@ -163,22 +163,25 @@ std::vector<ColumnSpec> make_columns() {
                [](const S& s) { return s.frame_force; }, nullptr,
                [](PathPoint& p, double v) { p.state.frame_force = v; }});
   // The failure indices (analysis/damage_probe.hpp): the largest over the monitored nodes.
+  // path_grid.csv interpolates them linearly: a largest value over nodes and plies has a kink
+  // wherever its place changes, where a slope is no better than the chord, and each point's
+  // slopes would cost two more probes off the branch (issue 16's budget).
   const std::string index =
       " over the monitored nodes near the indenter (bottom, middle and top of every ply; "
       "docs/theory/failure.md 6): the inverse load factor to onset, 1 = onset (an event "
       "`damage_onset` in events.json and path.json's `damage`)";
   c.push_back({PathColumn::kMaxStressIndex, "max_stress_index", "-",
                "largest maximum-stress failure index" + index, failure_index<0>, nullptr,
-               restore_failure_index<0>, true, G::kHermite, Criterion::kMaxStress});
+               restore_failure_index<0>, true, G::kLinear, Criterion::kMaxStress});
   c.push_back({PathColumn::kTsaiWuIndex, "tsai_wu_index", "-",
                "largest Tsai-Wu failure index" + index, failure_index<1>, nullptr,
-               restore_failure_index<1>, true, G::kHermite, Criterion::kTsaiWu});
+               restore_failure_index<1>, true, G::kLinear, Criterion::kTsaiWu});
   c.push_back({PathColumn::kHashinIndex, "hashin_index", "-",
                "largest Hashin (3-D, four modes) failure index" + index, failure_index<2>, nullptr,
-               restore_failure_index<2>, true, G::kHermite, Criterion::kHashin});
+               restore_failure_index<2>, true, G::kLinear, Criterion::kHashin});
   c.push_back({PathColumn::kDelaminationIndex, "delamination_index", "-",
                "largest quadratic interlaminar (Brewer-Lagace) index on the interfaces" + index,
-               failure_index<3>, nullptr, restore_failure_index<3>, true, G::kHermite,
+               failure_index<3>, nullptr, restore_failure_index<3>, true, G::kLinear,
                Criterion::kQuadraticDelamination});
   // The stability of the point (path.stability; docs/theory/continuation.md 9, 12).
   ColumnSpec stable{PathColumn::kStable,
@@ -288,9 +291,18 @@ std::vector<StateMonitor> path_monitors(const std::vector<PathColumn>& columns) 
   std::vector<StateMonitor> m;
   for (PathColumn id : columns) {
     const ColumnSpec& c = path_column(id);
-    if (c.monitor) m.push_back({c.name, c.of_state});
+    if (c.monitor) m.push_back({c.name, c.of_state, c.criterion.has_value()});
   }
   return m;
+}
+
+std::vector<std::string> slope_monitor_names(const std::vector<PathColumn>& columns) {
+  std::vector<std::string> names;
+  for (PathColumn id : columns) {
+    const ColumnSpec& c = path_column(id);
+    if (c.monitor && c.grid == GridInterpolation::kHermite) names.emplace_back(c.name);
+  }
+  return names;
 }
 
 Eigen::VectorXd monitor_values(const IndentationState& s, const std::vector<PathColumn>& columns) {

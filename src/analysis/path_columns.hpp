@@ -112,6 +112,9 @@ PathPoint path_point_from_values(const std::vector<double>& v,
 
 // The monitor columns among `columns`, in their order: the continuation's monitors of a run.
 std::vector<StateMonitor> path_monitors(const std::vector<PathColumn>& columns = base_columns());
+// The monitors among `columns` whose slopes path_grid.csv's Hermite interpolation reads: the
+// continuation computes theirs at every point (cont::Settings::slope_monitors), no others'.
+std::vector<std::string> slope_monitor_names(const std::vector<PathColumn>& columns);
 // Their values at a state, in the same order.
 Eigen::VectorXd monitor_values(const IndentationState& s,
                                const std::vector<PathColumn>& columns = base_columns());

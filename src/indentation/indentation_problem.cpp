@@ -212,13 +212,13 @@ std::vector<std::string> IndentationProblem::monitor_names() const {
 }
 
 void IndentationProblem::quantities(const cont::Vector& z, const std::vector<NodeState>& s,
-                                    double h, IndentationState& out) const {
+                                    double h, IndentationState& out, bool with_probe) const {
   const int apex = model_.apex_node();
   out.apex_deflection = s[apex].u.dot(body_.direction());
   out.apex_curvature = shell_.curvature(s, apex);
   const TermPoint p{z, h, s};
   for (const auto& t : parts_.terms) t->quantities(p, out);
-  probe(z, s, out);
+  if (with_probe) probe(z, s, out);
 }
 
 void IndentationProblem::probe(const cont::Vector& z, const std::vector<NodeState>& s,
@@ -256,6 +256,19 @@ cont::Vector IndentationProblem::monitors(const cont::Vector& z, double h) {
   cont::Vector m(static_cast<Eigen::Index>(options_.monitors.size()));
   for (std::size_t i = 0; i < options_.monitors.size(); ++i)
     m[static_cast<Eigen::Index>(i)] = options_.monitors[i].value(s);
+  return m;
+}
+
+cont::Vector IndentationProblem::monitor_subset(const cont::Vector& z, double h,
+                                                const std::vector<int>& which) {
+  const auto& all = options_.monitors;
+  const bool probed = std::any_of(which.begin(), which.end(),
+                                  [&](int i) { return all[static_cast<std::size_t>(i)].probed; });
+  IndentationState s;
+  quantities(z, node_states(z), h, s, probed);
+  cont::Vector m(static_cast<Eigen::Index>(which.size()));
+  for (std::size_t i = 0; i < which.size(); ++i)
+    m[static_cast<Eigen::Index>(i)] = all[static_cast<std::size_t>(which[i])].value(s);
   return m;
 }
 

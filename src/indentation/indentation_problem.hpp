@@ -71,6 +71,9 @@ class IndentationProblem : public cont::Problem {
   std::vector<std::string> monitor_names() const override;
   // The monitors need no assembly (the continuation evaluates them off the branch too).
   cont::Vector monitors(const cont::Vector& z, double h) override;
+  // Without the damage probe unless a monitor in `which` reads it (StateMonitor::probed).
+  cont::Vector monitor_subset(const cont::Vector& z, double h,
+                              const std::vector<int>& which) override;
   std::vector<int> signature(const cont::Vector& z, double h) override;
   bool adapt(cont::Vector& z, double h) override;
   // Drops what one solve hands the next (the Jacobian solver's reused preconditioner or LU, the
@@ -151,9 +154,9 @@ class IndentationProblem : public cont::Problem {
   void build_pattern();
   // r_free = r(x) - the terms' forces; returns the node states at z.
   const std::vector<NodeState>& shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
-  // The quantities of the monitors (no gaps, no assembly).
+  // The quantities of the monitors (no gaps, no assembly); the probe's only `with_probe`.
   void quantities(const cont::Vector& z, const std::vector<NodeState>& s, double h,
-                  IndentationState& out) const;
+                  IndentationState& out, bool with_probe = true) const;
   // The probe's part at node states s; z's multiplier block may be the head of today's.
   void probe(const cont::Vector& z, const std::vector<NodeState>& s, IndentationState& out) const;
 

@@ -71,6 +71,8 @@ struct IndentationCounters {
 struct StateMonitor {
   std::string name;
   double (*value)(const IndentationState&) = nullptr;
+  // Reads the damage probe's part of the state (IndentationProblem::set_probe): the costly one.
+  bool probed = false;
 };
 
 }  // namespace si

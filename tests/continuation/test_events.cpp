@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "../verification_record.hpp"
 #include "branch_test_support.hpp"
@@ -29,10 +32,19 @@ class CubicWithAbscissa final : public Problem {
   }
   bool solve(Vector& b) override { return cubic_.solve(b); }
   std::vector<std::string> monitor_names() const override { return {"y", "p", "q"}; }
-  Vector monitors(const Vector& x, double p) override { return Vector{{x(0), p, p * p * p + p}}; }
+  Vector monitors(const Vector& x, double p) override {
+    ++monitor_evaluations;
+    return Vector{{x(0), p, p * p * p + p}};
+  }
+  Vector monitor_subset(const Vector& x, double p, const std::vector<int>& which) override {
+    asked_for_subsets.insert(which.begin(), which.end());
+    return Problem::monitor_subset(x, p, which);
+  }
   std::vector<int> signature(const Vector& x, double /*p*/) override { return {x(0) > -1.0}; }
 
   int factorizations = 0;
+  int monitor_evaluations = 0;      // the points analysed, trial points of a location included
+  std::set<int> asked_for_subsets;  // the monitors the derivatives along the branch evaluated
 
  private:
   test::CubicBranchProblem cubic_;
@@ -165,14 +177,14 @@ TEST(ContEvents, SignatureChangeUnlocatedWhenNotAsked) {
 
 // With a value tolerance the location stops once |y - 1| is within it: the crossings are where
 // y = 1 to that tolerance (p to it over |y'|, and the reported accuracy bounds the true
-// distance), found with fewer corrector solves than the 1e-9 bracket; without it (0) the
-// location is the bracket's, as above. What must not change: the number of crossings.
+// distance), found at fewer trial points (each a corrector solve) than the 1e-9 bracket; without
+// it (0) the location is the bracket's, as above. What must not change: the number of crossings.
 TEST(ContEvents, LevelCrossingValueToleranceStopsWithinTheValue) {
   const double pi = std::acos(-1.0);
   const double expected[] = {2 * std::cos(7 * pi / 9), 2 * std::cos(5 * pi / 9),
                              2 * std::cos(pi / 9)};
   for (Method method : {Method::kNatural, Method::kPseudoArclength}) {
-    int factorizations[2] = {0, 0};
+    int trial_points[2] = {0, 0};
     for (int loose = 0; loose < 2; ++loose) {
       Settings s = event_settings(method);
       s.zero_crossing_monitors.clear();
@@ -184,7 +196,7 @@ TEST(ContEvents, LevelCrossingValueToleranceStopsWithinTheValue) {
       const Vector x0 = Vector::Constant(1, test::CubicBranchProblem::branch(-2.4));
       const Branch b = method == Method::kNatural ? natural(problem, x0, -2.4, s)
                                                   : pseudo_arclength(problem, x0, -2.4, s);
-      factorizations[loose] = problem.factorizations;
+      trial_points[loose] = problem.monitor_evaluations;
       const auto crossings = test::events_of(b, EventType::kZeroCrossing);
       ASSERT_EQ(crossings.size(), 3u);
       for (int i = 0; i < 3; ++i) {
@@ -199,7 +211,7 @@ TEST(ContEvents, LevelCrossingValueToleranceStopsWithinTheValue) {
         }
       }
     }
-    EXPECT_LT(factorizations[1], factorizations[0]) << "the value test saves no solve";
+    EXPECT_LT(trial_points[1], trial_points[0]) << "the value test saves no solve";
   }
 }
 
@@ -233,6 +245,42 @@ TEST(ContEvents, LevelCrossingLocatedAtTheLevel) {
       EXPECT_NEAR(crossings[i].p, expected[i], 1e-9);
       EXPECT_EQ(crossings[i].monitor, "y");
     }
+  }
+}
+
+// The derivatives along the branch are taken only for the monitors that need them: those of
+// the extremum indicator (y) and the caller's slope_monitors (q), never p's, whose slope stays NaN.
+// Off-branch evaluations of a costly monitor are what this saves (issue 16: the damage probe).
+// The slopes that are computed are right: dm/ds = dm/dp dp/ds with y = p^3 - 3p, q = p^3 + p.
+TEST(ContEvents, SlopesOnlyOfTheMonitorsThatNeedThem) {
+  for (Method method : {Method::kNatural, Method::kPseudoArclength}) {
+    Settings s = event_settings(method);
+    s.zero_crossing_monitors.clear();
+    s.inflections.clear();
+    s.slope_monitors = {"q"};
+    CubicWithAbscissa problem;
+    const Vector x0 = Vector::Constant(1, test::CubicBranchProblem::branch(-2.4));
+    const Branch b = method == Method::kNatural ? natural(problem, x0, -2.4, s)
+                                                : pseudo_arclength(problem, x0, -2.4, s);
+    EXPECT_EQ(problem.asked_for_subsets, (std::set<int>{0, 2}));
+    ASSERT_GT(b.points.size(), 10u);
+    for (const Point& pt : b.points) {
+      ASSERT_EQ(pt.monitor_slopes.size(), 3);
+      EXPECT_TRUE(std::isnan(pt.monitor_slopes(1)));
+      const double p = pt.p;
+      EXPECT_NEAR(pt.monitor_slopes(0), (3 * p * p - 3) * pt.tangent_p, 1e-6);
+      EXPECT_NEAR(pt.monitor_slopes(2), (3 * p * p + 1) * pt.tangent_p, 1e-6);
+    }
+  }
+  Settings s = event_settings(Method::kNatural);
+  s.slope_monitors = {"z"};
+  CubicWithAbscissa problem;
+  try {
+    natural(problem, Vector::Constant(1, test::CubicBranchProblem::branch(-2.4)), -2.4, s);
+    ADD_FAILURE() << "an unknown slope monitor was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("slope_monitors: unknown monitor 'z'"), std::string::npos)
+        << e.what();
   }
 }
 
