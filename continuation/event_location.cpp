@@ -1,16 +1,12 @@
 #include "continuation/event_location.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <optional>
 #include <utility>
+
+#include "continuation/brent_root.hpp"
 
 namespace si::cont {
 namespace {
-
-int sign(double v) {
-  return v > 0.0 ? 1 : (v < 0.0 ? -1 : 0);
-}
 
 // A point at sigma; if it cannot be had (the interpolation lands exactly on a root where J is
 // singular, e.g. a bifurcation whose indicator is linear), a point slightly off it towards the
@@ -28,86 +24,28 @@ bool solve_near(const SegmentSolver& solve, double& sigma, double middle, const 
   return false;
 }
 
-// One end of the bracket: its local coordinate, the indicator's value and the solved point.
-struct Sample {
-  double sigma;
-  double g;
-  TangentPoint point;
-};
-
-// Brent's step from the best end b towards the root (Brent 1973, ch. 4): inverse quadratic
-// interpolation through a (the previous b), b and c (the bracket's other end) when the three values
-// differ, else the secant through a and b; nullopt when the interpolated step is not accepted
-// (it leaves the bracket's inner three quarters, or is more than half the step before last: the
-// interpolation is not converging): then the caller bisects.
-std::optional<double> interpolated_step(const Sample& a, const Sample& b, const Sample& c,
-                                        double half_width, double previous_step, double tolerance) {
-  const double s = b.g / a.g;
-  double p = 0.0, q = 0.0;
-  if (a.sigma == c.sigma) {
-    p = 2.0 * half_width * s;
-    q = 1.0 - s;
-  } else {
-    const double qa = a.g / c.g, r = b.g / c.g;
-    p = s * (2.0 * half_width * qa * (qa - r) - (b.sigma - a.sigma) * (r - 1.0));
-    q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
-  }
-  if (p > 0.0) q = -q;
-  p = std::abs(p);
-  if (2.0 * p <
-      std::min(3.0 * half_width * q - std::abs(tolerance * q), std::abs(previous_step * q)))
-    return p / q;
-  return std::nullopt;
-}
-
 }  // namespace
 
 double locate_root(const std::function<double(const TangentPoint&)>& g, const SegmentPoint& lo,
                    const SegmentPoint& hi, const SegmentSolver& solve, const Settings& settings,
                    TangentPoint& out, bool& located, double value_tolerance) {
-  // Brent's method: b the best estimate, c the bracket's other end (g(c) of the other sign), a
-  // the previous b; d the last step, e the one before.
-  Sample a{lo.sigma, g(lo.point), lo.point};
-  Sample b{hi.sigma, g(hi.point), hi.point};
-  Sample c = b;
-  double d = b.sigma - a.sigma, e = d;
-  const double tolerance = 0.5 * settings.event_tolerance;
-  const auto small_enough = [value_tolerance](const Sample& x) {
-    return x.g == 0.0 || std::abs(x.g) <= value_tolerance;
+  using Sample = RootSample<TangentPoint>;
+  // Each trial point's corrector starts from the chord of the bracket's ends.
+  const auto evaluate = [&](double& sigma, const Sample& left, const Sample& right,
+                            TangentPoint& at, double& value) {
+    const SegmentChord chord{left.x, left.at.point, right.x, right.at.point};
+    if (!solve_near(solve, sigma, 0.5 * (left.x + right.x), &chord, at)) return false;
+    value = g(at);
+    return true;
   };
-  for (int it = 0; it < settings.event_max_iterations; ++it) {
-    if (sign(b.g) == sign(c.g)) {  // the root lies between a and b
-      c = a;
-      d = e = b.sigma - a.sigma;
-    }
-    if (std::abs(c.g) < std::abs(b.g)) {  // b: the end nearer the root, a the previous b
-      std::swap(b, c);
-      a = c;
-    }
-    const double half_width = 0.5 * (c.sigma - b.sigma);
-    if (std::abs(half_width) <= tolerance || small_enough(b)) break;
-    const std::optional<double> step = std::abs(e) >= tolerance && std::abs(a.g) > std::abs(b.g)
-                                           ? interpolated_step(a, b, c, half_width, e, tolerance)
-                                           : std::nullopt;
-    e = step ? d : half_width;
-    d = step ? *step : half_width;
-    double sigma = b.sigma + (std::abs(d) > tolerance ? d : std::copysign(tolerance, half_width));
-    const bool b_first = b.sigma < c.sigma;
-    const Sample& left = b_first ? b : c;
-    const Sample& right = b_first ? c : b;
-    const SegmentChord chord{left.sigma, left.point.point, right.sigma, right.point.point};
-    TangentPoint trial;
-    if (!solve_near(solve, sigma, b.sigma + half_width, &chord, trial)) break;
-    const double value = g(trial);
-    if (std::isnan(value)) break;
-    a = std::move(b);
-    b = {sigma, value, std::move(trial)};
-  }
-  out = b.point;
-  const double width = b.g == 0.0 ? 0.0 : std::abs(c.sigma - b.sigma);
-  if (width > settings.event_tolerance && small_enough(b)) {
+  RootBracket<TangentPoint> r = brent_root<TangentPoint>(
+      {lo.sigma, g(lo.point), lo.point}, {hi.sigma, g(hi.point), hi.point},
+      {settings.event_tolerance, value_tolerance, settings.event_max_iterations}, evaluate);
+  out = std::move(r.best.at);
+  const double width = r.width();
+  if (width > settings.event_tolerance && r.within_value(value_tolerance)) {
     located = true;
-    return std::min(width, std::abs(b.g) * width / std::abs(c.g - b.g));
+    return std::min(width, r.secant_distance());
   }
   located = width <= settings.event_tolerance;
   return width;

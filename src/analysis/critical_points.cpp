@@ -5,6 +5,7 @@
 
 #include "analysis/grid_features.hpp"
 #include "analysis/path_columns.hpp"
+#include "continuation/brent_root.hpp"
 #include "continuation/curve_features.hpp"
 #include "continuation/kinsol_corrector.hpp"
 #include "indentation/linear_indentation.hpp"
@@ -13,6 +14,10 @@ namespace si {
 namespace {
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+// The onset's search on solved points stops once the deviation from the linear response is
+// within this of its fraction: ten times the deviation's own noise (the corrector's 1e-10
+// relative force tolerance), and one solve fewer than the 1e-9 mm bracket on the main job.
+constexpr double kDeviationTolerance = 1e-9;
 
 double slope_at(const PathPoint& p, int force_slope) {
   return force_slope >= 0 && force_slope < p.depth_slopes.size() ? p.depth_slopes[force_slope]
@@ -39,34 +44,24 @@ double force_between(const PathPoint& a, const PathPoint& b, double d, int force
          h11 * dd * slope_at(b, force_slope);
 }
 
-// The root of r in [lo, hi], r(lo) < 0 <= r(hi), by the Illinois regula falsi until the bracket
-// is `tolerance` (mm) wide or r vanishes; `width` = the final bracket. r is NaN where it cannot be
-// evaluated: then NaN.
+// The root of r in [lo, hi], r(lo) < 0 <= r(hi), by Brent's method (continuation/brent_root.hpp)
+// until the bracket is `tolerance` (mm) wide, or |r| <= value_tolerance, or r vanishes;
+// `accuracy` = the final bracket, or once within the value, the secant's distance to the root
+// (never more than the bracket). r is NaN where it cannot be evaluated: then NaN.
 double root_between(const std::function<double(double)>& r, double lo, double hi, double rlo,
-                    double rhi, double tolerance, double& width) {
-  int kept = 0;  // the end replaced last: -1 lo, +1 hi (Illinois halves the other's value)
-  double x = lo;
-  width = hi - lo;
-  for (int it = 0; it < 200 && hi - lo > tolerance; ++it) {
-    x = lo + (hi - lo) * rlo / (rlo - rhi);
-    const double f = r(x);
-    if (std::isnan(f)) return f;
-    if (f < 0) {
-      lo = x, rlo = f;
-      if (kept == -1) rhi *= 0.5;
-      kept = -1;
-    } else {
-      hi = x, rhi = f;
-      if (kept == 1) rlo *= 0.5;
-      kept = 1;
-      if (f == 0) {
-        lo = hi;
-        break;
-      }
-    }
-  }
-  width = hi - lo;
-  return x;
+                    double rhi, double tolerance, double value_tolerance, double& accuracy) {
+  bool failed = false;
+  const auto value = [&](double h) {
+    const double v = r(h);
+    failed = failed || std::isnan(v);
+    return v;
+  };
+  const cont::RootBracket<double> b =
+      cont::brent_root(value, lo, hi, rlo, rhi, {tolerance, value_tolerance, 200});
+  accuracy = b.width() > tolerance && b.within_value(value_tolerance)
+                 ? std::min(b.width(), b.secant_distance())
+                 : b.width();
+  return failed ? std::nan("") : b.best.x;
 }
 
 // The inflection indicator's curve T(h) at interior point i: T' exact where the points carry it
@@ -143,7 +138,7 @@ void find_nonlinearity_onset(const std::vector<PathPoint>& points, int force_slo
     const auto root = [&](bool hermite, double& width) {
       return root_between(
           [&](double h) { return deviation(h, force_between(a, b, h, force_slope, hermite)); },
-          a.state.depth, b.state.depth, r_previous, r, 1e-12 * (1 + b.state.depth), width);
+          a.state.depth, b.state.depth, r_previous, r, 1e-12 * (1 + b.state.depth), 0.0, width);
     };
     CriticalPoint c;
     c.kind = CriticalKind::kNonlinearityOnset;
@@ -156,7 +151,7 @@ void find_nonlinearity_onset(const std::vector<PathPoint>& points, int force_slo
                        double t = 0;
                        return exact(a.state.depth, h, t) ? deviation(h, t) : std::nan("");
                      },
-                     a.state.depth, b.state.depth, r_previous, r, 1e-9, width);
+                     a.state.depth, b.state.depth, r_previous, r, 1e-9, kDeviationTolerance, width);
     if (std::isfinite(solved)) {
       c.depth = solved;
       c.located = true;
