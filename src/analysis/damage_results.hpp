@@ -1,7 +1,7 @@
 // What a run with a `damage:` section reports beside its columns (docs/results.md, `damage` in
 // path.json; docs/theory/failure.md 6 items 3-5):
 //  * per monitored criterion, its onset: the event where the largest index reaches 1 (located
-//    by the continuation's event machinery, or by regula falsi on the linear fast path's exact
+//    by the continuation's event machinery, or by Brent's method on the linear fast path's exact
 //    solves), with the mode, the ply or interface, the position through the thickness, the node,
 //    the depth, the force and the indenter work there (the work on path.csv's trapezoidal
 //    interpolation, so that impact energy and event agree: depth_at_energy(work) = depth);

@@ -12,6 +12,7 @@
 #include "analysis/path_columns.hpp"
 #include "contact/indenter_factory.hpp"
 #include "continuation/branch_switching.hpp"
+#include "continuation/brent_root.hpp"
 #include "continuation/checkpoint.hpp"
 #include "continuation/kinsol_corrector.hpp"
 #include "continuation/natural.hpp"
@@ -86,54 +87,61 @@ void finish(PathResult& r, bool completed, RunStatus status, const std::string& 
 // failed, empty on success, and the iterations it took.
 using DepthSolve = std::function<std::string(double h, cont::Vector& z, int& iterations)>;
 
+// A trial depth of an onset's search on a grid: its solved state.
+struct OnsetTrial {
+  cont::Vector z;
+  IndentationState state;
+};
+
 // Onset events between the last two points of a grid: where a failure index reaches 1. With an
-// exact solve per depth (`solve`, the linear fast path) located by the Illinois regula falsi to
-// 1e-10 of the depth (one step when the index is linear in the depth); otherwise (the active-set
-// grid, whose solves may grow the candidate set) interpolated linearly and marked not located.
+// exact solve per depth (`solve`, the linear fast path) located by Brent's method
+// (continuation/brent_root.hpp) to an index within kOnsetIndexTolerance of 1, as the
+// continuation's onsets, or a 1e-10 bracket; otherwise (the active-set grid, whose solves may
+// grow the candidate set) interpolated linearly and marked not located.
 void locate_onsets(IndentationSetup& s, PathResult& r, const cont::Vector& z_previous,
                    const DepthSolve& solve) {
+  using Sample = cont::RootSample<OnsetTrial>;
   const PathPoint& a = r.points[r.points.size() - 2];
   const PathPoint& b = r.points.back();
   const std::vector<PathColumn> columns = result_columns(r);
   for (Criterion c : r.criteria) {
-    const double fa = a.state.failure[static_cast<int>(c)].index - 1;
-    const double fb = b.state.failure[static_cast<int>(c)].index - 1;
+    const int k = static_cast<int>(c);
+    const double fa = a.state.failure[k].index - 1;
+    const double fb = b.state.failure[k].index - 1;
     if (!(fa < 0 && fb >= 0)) continue;
     cont::Event e;
     e.type = cont::EventType::kZeroCrossing;
     e.monitor = column_name(failure_column(c));
     e.step = b.index;
-    double lo = a.state.depth, hi = b.state.depth, flo = fa, fhi = fb;
-    e.p = lo + (hi - lo) * flo / (flo - fhi);
-    e.located = static_cast<bool>(solve);
-    e.accuracy = hi - lo;
-    IndentationState state = b.state;
-    int kept = 0;  // the end replaced last: -1 lo, +1 hi (Illinois halves the other's value)
-    for (int it = 0; solve && it < 60; ++it) {
-      cont::Vector z = z_previous;
+    e.p = a.state.depth + (b.state.depth - a.state.depth) * fa / (fa - fb);
+    e.accuracy = b.state.depth - a.state.depth;
+    e.monitors = monitor_values(b.state, columns);
+    e.located = false;
+    bool failed = false;
+    const auto evaluate = [&](double& h, const Sample&, const Sample&, OnsetTrial& at, double& f) {
+      at.z = z_previous;
       int iterations = 0;
-      if (!solve(e.p, z, iterations).empty()) {
-        e.located = false;
-        break;
+      failed = !solve(h, at.z, iterations).empty();
+      if (failed) return false;
+      at.state = s.problem->evaluate(at.z, h);
+      f = at.state.failure[k].index - 1;
+      return true;
+    };
+    const double tolerance = 1e-10 * (1 + b.state.depth);
+    if (solve) {
+      const cont::RootBracket<OnsetTrial> root =
+          cont::brent_root<OnsetTrial>({a.state.depth, fa, {}}, {b.state.depth, fb, {}},
+                                       {tolerance, kOnsetIndexTolerance, 60}, evaluate);
+      // The bracket's ends are the grid's points, whose states are not trials: only a trial
+      // (a solved state) is an event point.
+      if (!failed && root.best.at.z.size() > 0) {
+        e.p = root.best.x;
+        e.x = root.best.at.z;
+        e.monitors = monitor_values(root.best.at.state, columns);
+        e.accuracy = std::min(root.width(), root.secant_distance());
+        e.located = root.width() <= tolerance || root.within_value(kOnsetIndexTolerance);
       }
-      state = s.problem->evaluate(z, e.p);
-      e.x = z;
-      const double f = state.failure[static_cast<int>(c)].index - 1;
-      if (f < 0) {
-        lo = e.p, flo = f;
-        if (kept == -1) fhi *= 0.5;
-        kept = -1;
-      } else {
-        hi = e.p, fhi = f;
-        if (kept == 1) flo *= 0.5;
-        kept = 1;
-      }
-      // The bracket, or the depth error of the residual index over the segment's slope.
-      e.accuracy = std::min(hi - lo, std::abs(f) * (b.state.depth - a.state.depth) / (fb - fa));
-      if (std::abs(f) <= 1e-12 || hi - lo <= 1e-10 * (1 + hi)) break;
-      e.p = lo + (hi - lo) * flo / (flo - fhi);
     }
-    e.monitors = monitor_values(solve ? state : b.state, columns);
     r.events.push_back(e);
   }
 }
