@@ -64,6 +64,7 @@ IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolve
   if (spec.path.imperfection) {  // before anything reads the mesh's positions
     imperfection = seed_imperfection(spec, threads, linear_solver);
     add_imperfection(model.mesh, imperfection->shape);
+    keep_directors_in_symmetry_planes(model.mesh, model.supports);
   }
   pose = default_indenter_pose(spec, model);
   try {

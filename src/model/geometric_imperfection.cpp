@@ -21,4 +21,15 @@ void add_imperfection(Mesh& mesh, const Eigen::MatrixXd& translations) {
   }
 }
 
+void keep_directors_in_symmetry_planes(Mesh& mesh, const std::vector<Support>& supports) {
+  for (const Support& s : supports) {
+    if (s.kind != SupportKind::kSymmetryPlane || s.plane_axis < 0 || s.plane_axis > 2) continue;
+    for (int n : mesh.node_sets.at(s.node_set)) {
+      Vector3d& d = mesh.directors[n];
+      d[s.plane_axis] = 0.0;
+      if (d.norm() > 0) d.normalize();
+    }
+  }
+}
+
 }  // namespace si

@@ -4,7 +4,10 @@
 
 #include <Eigen/Dense>
 
+#include <vector>
+
 #include "model/mesh.hpp"
+#include "model/supports.hpp"
 
 namespace si {
 
@@ -15,5 +18,13 @@ namespace si {
 // to first order in the translations, and a mesh whose directors are its element normals gets
 // exactly those of the moved mesh. Throws std::invalid_argument on a size mismatch.
 void add_imperfection(Mesh& mesh, const Eigen::MatrixXd& translations);
+
+// Puts back into each symmetry plane of `supports` (kSymmetryPlane) the directors of the plane's
+// nodes: the component along the plane's normal is removed and the director renormalised. After
+// add_imperfection the turn n1 - n0 at such a node comes from the elements on one side of the
+// plane only (the mirrored half is not meshed), so it leaves the plane although a symmetric
+// imperfection's exact normal lies in it; the supports refuse a director off its plane. Throws
+// std::out_of_range for a support naming a node set the mesh lacks.
+void keep_directors_in_symmetry_planes(Mesh& mesh, const std::vector<Support>& supports);
 
 }  // namespace si

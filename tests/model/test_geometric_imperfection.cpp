@@ -6,12 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "core/constants.hpp"
 #include "mesh_test_support.hpp"
 #include "model/plate_meshes.hpp"
+#include "model/supports.hpp"
 
 namespace si {
 namespace {
@@ -85,6 +88,56 @@ TEST(GeometricImperfection, OneTranslationPerNodeRequired) {
                std::invalid_argument);
   EXPECT_THROW(add_imperfection(mesh, Eigen::MatrixXd::Zero(mesh.num_nodes(), 2)),
                std::invalid_argument);
+}
+
+// A quarter model: the plate [0, L]^2 is the quarter x, y >= 0 of [-L, L]^2, bumped by the
+// symmetric w = a cos(pi x / 2L) cos(pi y / 2L), whose exact normal lies in the planes x = 0 and
+// y = 0 there. add_imperfection's one-sided element normals tilt the plane nodes' directors out of
+// their planes (which the symmetry supports refuse); keep_directors_in_symmetry_planes puts them
+// back, closer to the exact normal than before, and touches no other node.
+TEST(GeometricImperfection, SymmetryPlaneDirectorsStayInTheirPlanes) {
+  Mesh mesh = rectangular_plate_mesh(kL, kL, 8, 8);
+  std::vector<int>& on_x = mesh.node_sets["symmetry_x"];
+  std::vector<int>& on_y = mesh.node_sets["symmetry_y"];
+  for (int i = 0; i < mesh.num_nodes(); ++i) {
+    if (mesh.nodes[i].x() == 0.0) on_x.push_back(i);
+    if (mesh.nodes[i].y() == 0.0) on_y.push_back(i);
+  }
+  ASSERT_EQ(on_x.size(), 9u);
+  const double k = kPi / (2 * kL);
+  Eigen::MatrixXd t = Eigen::MatrixXd::Zero(mesh.num_nodes(), 3);
+  for (int i = 0; i < mesh.num_nodes(); ++i)
+    t(i, 2) = kBump * std::cos(k * mesh.nodes[i].x()) * std::cos(k * mesh.nodes[i].y());
+  const auto exact = [&](const Vector3d& p) {
+    return Vector3d(kBump * k * std::sin(k * p.x()) * std::cos(k * p.y()),
+                    kBump * k * std::cos(k * p.x()) * std::sin(k * p.y()), 1.0)
+        .normalized();
+  };
+  add_imperfection(mesh, t);
+  const Mesh tilted = mesh;
+  double off_plane = 0;
+  for (int n : on_x) off_plane = std::max(off_plane, std::abs(tilted.directors[n].x()));
+  EXPECT_GT(off_plane, 1e-4);  // the defect this mends: a director off its plane
+  const std::vector<Support> planes = {{SupportKind::kSymmetryPlane, "symmetry_x", 0, {}},
+                                       {SupportKind::kSymmetryPlane, "symmetry_y", 1, {}},
+                                       {SupportKind::kClamped, "symmetry_x", -1, {}}};
+  keep_directors_in_symmetry_planes(mesh, planes);
+  for (int i = 0; i < mesh.num_nodes(); ++i) {
+    const Vector3d& p = tilted.nodes[i];
+    const bool x0 = p.x() == 0.0, y0 = p.y() == 0.0;
+    if (!x0 && !y0) {
+      EXPECT_EQ(mesh.directors[i], tilted.directors[i]);
+      continue;
+    }
+    if (x0) {
+      EXPECT_EQ(mesh.directors[i].x(), 0.0);
+    }
+    if (y0) {
+      EXPECT_EQ(mesh.directors[i].y(), 0.0);
+    }
+    EXPECT_NEAR(mesh.directors[i].norm(), 1.0, 1e-14);
+    EXPECT_GE(mesh.directors[i].dot(exact(p)), tilted.directors[i].dot(exact(p)) - 1e-15);
+  }
 }
 
 }  // namespace
