@@ -317,6 +317,9 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   std::vector<std::string> written = write_path_files(dir, formats, setup, r, vtus, damage_rows);
   if (event_files > 0)
     written.push_back(std::to_string(event_files) + " of them at located events (event_NN.vtu)");
+  // Why a completed path ended, said where the user looks: it may carry a second statement
+  // (path.branch_switch without a bifurcation on the path).
+  if (r.completed) err << "run: " << r.reason << "\n";
   err << "wrote ";
   for (std::size_t i = 0; i < written.size(); ++i) err << (i ? ", " : "") << written[i];
   err << (written.empty() ? "nothing (output.formats)" : "") << "\n";

@@ -273,6 +273,23 @@ TEST(RunCommand, ImpactEnergyBeyondThePathIsSaidNotExtrapolated) {
   EXPECT_LT(energies[1]["max_work_Nmm"].get<double>(), 10000.0);
 }
 
+// A completed run says why it ended; with path.branch_switch and no bifurcation on the path
+// (this cap's fundamental path is stable to 1 mm) that there was no branch to switch to, on
+// stderr as in path.json's reason (it was in path.json alone).
+TEST(RunCommand, BranchSwitchWithoutABifurcationSaysSo) {
+  const fs::path dir = fresh_dir("run_branch_switch_none");
+  const fs::path c = write_case(
+      dir,
+      cap_case("nonlinear", "{shape: sphere, radius: 12.7 mm}",
+               "{depth_max: 1 mm, step: 0.1 mm, stability: true, branch_switch: {direction: 1}}"));
+  const auto r = run_cli("run '" + c.string() + "' --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output,
+                       "run: reached depth_max 1 mm; path.branch_switch: no bifurcation "
+                       "on the path, no branch to switch to"))
+      << r.output;
+}
+
 // Ctrl-C (SIGINT) stops the run after the current point: every converged point is written, the
 // status says the run was stopped, and the message says it was interrupted, not "stopped by the
 // callback" (issue 13 item 15). The signal is sent once the first progress line is on stderr, so
