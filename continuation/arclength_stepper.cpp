@@ -129,7 +129,7 @@ bool ArclengthStepper::solve_on_segment(const State& from, const StepResult& ste
     const double t = sigma / step.sigma_end;
     u = stack(a.x + t * (step.x - a.x), a.p + t * (step.p - a.p));
   }
-  if (!newton_solve(system, u, chord_newton(settings_.newton)).converged) {
+  if (!newton_solve(system, u, settings_.newton).converged) {
     u = stack(a.x + sigma * step.direction_x, a.p + sigma * step.direction_p);
     if (!newton_solve(system, u, settings_.newton).converged) return false;
   }

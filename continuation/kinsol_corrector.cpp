@@ -160,7 +160,7 @@ void configure(Kinsol& k, Adapter& data, const Vector& u0, double tolerance,
   check(KINSetJacFn(k.mem, [](N_Vector u, N_Vector fu, SUNMatrix, void* d, N_Vector,
                               N_Vector) { return adapter(d).setup(u, fu); }),
         "KINSetJacFn");
-  check(KINSetMaxSetupCalls(k.mem, settings.max_setup_calls), "KINSetMaxSetupCalls");
+  check(KINSetMaxSetupCalls(k.mem, 1), "KINSetMaxSetupCalls");  // full Newton
   check(KINSetNumMaxIters(k.mem, settings.max_iterations), "KINSetNumMaxIters");
   check(KINSetFuncNormTol(k.mem, tolerance), "KINSetFuncNormTol");
   // A step below ~eps relative means roundoff stagnation: stop and report, do not spin.

@@ -68,7 +68,7 @@ class NaturalStepper final : public Stepper {
                        ((sigma - chord->sigma_lo) / (chord->sigma_hi - chord->sigma_lo)) *
                            (chord->hi.x - chord->lo.x))
               : Vector(a.x + (sigma / step.sigma_end) * (step.x - a.x));
-    if (solve_at(problem_, x, p, chord_newton(settings_.newton)).converged) return true;
+    if (solve_at(problem_, x, p, settings_.newton).converged) return true;
     x = predict(from, p);
     return solve_at(problem_, x, p, settings_.newton).converged;
   }

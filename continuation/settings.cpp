@@ -40,12 +40,6 @@ void NewtonSettings::validate(const std::string& prefix) const {
   require_field(max_iterations >= 1, prefix, "max_iterations", max_iterations, "must be >= 1");
   require_field(std::isfinite(max_step) && max_step >= 0.0, prefix, "max_step", max_step,
                 "must be >= 0 (0 = automatic)");
-  require_field(max_setup_calls >= 1, prefix, "max_setup_calls", max_setup_calls, "must be >= 1");
-}
-
-NewtonSettings chord_newton(NewtonSettings settings) {
-  settings.max_setup_calls = 4;
-  return settings;
 }
 
 Method parse_method(const std::string& name) {

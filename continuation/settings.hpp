@@ -29,20 +29,9 @@ struct NewtonSettings {
   // Largest Newton step (L2 norm of the update); 0 = 1000 * max(1, ||x_start||_2). KINSOL's own
   // default is 1 when x_start = 0, which truncates steps (docs/toolchain.md §3 pitfall 2).
   double max_step = 0.0;
-  // Newton iterations per linearisation: 1 = full Newton (every iteration factors the Jacobian);
-  // more = a chord (modified) Newton that factors at the first iteration and again only after
-  // this many, or when KINSOL's residual monitoring finds the decrease too slow. Pays where the
-  // corrector starts very near the solution (the re-solves inside a located event's bracket).
-  int max_setup_calls = 1;
 
   void validate(const std::string& prefix = "newton") const;
 };
-
-// The settings of a re-solve inside a step's segment from the chord of solved points around it
-// (event location): the step's own, as a chord Newton (max_setup_calls 4). The chord predictor
-// is within the bracket's width squared of the solution, so the Jacobian there serves the
-// iterations after it.
-NewtonSettings chord_newton(NewtonSettings settings);
 
 enum class Method { kNatural, kPseudoArclength };
 enum class Predictor { kTangent, kSecant };

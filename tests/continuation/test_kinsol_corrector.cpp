@@ -55,31 +55,6 @@ TEST(ContKinsolCorrector, QuadraticConvergenceWithoutLineSearch) {
   expect_quadratic(false);
 }
 
-// A start very near the root (the chord predictor of a located event's re-solve): the chord
-// Newton of chord_newton() factors once where full Newton factors at every iteration, and reaches
-// the same tolerance; its residuals still fall at every iteration (a linear rate, J at the start
-// being nearly J at the root).
-TEST(ContKinsolCorrector, ChordNewtonFactorsOnceFromANearStart) {
-  const double p = 1.0;
-  test::CoupledProblem exact(4);
-  Vector root = Vector::Constant(4, 1.2);
-  ASSERT_TRUE(solve_at(exact, root, p, tight_settings()).converged);
-  const Vector start = root + Vector::Constant(4, 1e-4);
-  NewtonSettings settings = tight_settings();
-  settings.relative_tolerance = 1e-10;
-  test::CoupledProblem full(4), chord(4);
-  Vector x_full = start, x_chord = start;
-  const NewtonResult a = solve_at(full, x_full, p, settings);
-  const NewtonResult b = solve_at(chord, x_chord, p, chord_newton(settings));
-  ASSERT_TRUE(a.converged) << a.reason;
-  ASSERT_TRUE(b.converged) << b.reason;
-  EXPECT_GE(full.factorizations(), 2);
-  EXPECT_EQ(chord.factorizations(), 1);
-  EXPECT_LE((x_chord - root).lpNorm<Eigen::Infinity>(), 1e-9);
-  for (std::size_t k = 1; k < b.residual_norms.size(); ++k)
-    EXPECT_LT(b.residual_norms[k], 0.1 * b.residual_norms[k - 1]) << "iteration " << k;
-}
-
 TEST(ContKinsolCorrector, ExactStartNeedsNoIteration) {
   test::CircleProblem circle;
   Vector x{{0.6}};

@@ -76,8 +76,6 @@ TEST(ContSettings, RejectsBadNewtonSettings) {
                   "continuation.newton.max_iterations = 0");
   expect_rejected([](Settings& s) { s.newton.residual_scale = 0; },
                   "continuation.newton.residual_scale = 0");
-  expect_rejected([](Settings& s) { s.newton.max_setup_calls = 0; },
-                  "continuation.newton.max_setup_calls = 0");
   NewtonSettings newton;
   newton.residual_scale = 0;  // allowed for a standalone solve: purely relative
   EXPECT_NO_THROW(newton.validate());
