@@ -7,6 +7,7 @@
 // run's critical points.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -39,6 +40,18 @@ struct RootBracket {
   }
   // The distance from best to the root estimated by the bracket's secant, |f| / |df/dx|.
   double secant_distance() const { return std::abs(best.f) * width() / std::abs(other.f - best.f); }
+  // Whether the search of `search` ended on one of its two tests (not on its iteration count or
+  // an unevaluable point).
+  bool converged(const RootSearch& search) const {
+    return width() <= search.x_tolerance || within_value(search.value_tolerance);
+  }
+  // How far best may lie from the root: the bracket, or once the value test stopped the search
+  // early, the secant's estimate (never more than the bracket).
+  double accuracy(const RootSearch& search) const {
+    return width() > search.x_tolerance && within_value(search.value_tolerance)
+               ? std::min(width(), secant_distance())
+               : width();
+  }
 };
 
 // Brent's step from the best sample b towards the root, or nullopt when the interpolated step is

@@ -38,17 +38,12 @@ double locate_root(const std::function<double(const TangentPoint&)>& g, const Se
     value = g(at);
     return true;
   };
+  const RootSearch search{settings.event_tolerance, value_tolerance, settings.event_max_iterations};
   RootBracket<TangentPoint> r = brent_root<TangentPoint>(
-      {lo.sigma, g(lo.point), lo.point}, {hi.sigma, g(hi.point), hi.point},
-      {settings.event_tolerance, value_tolerance, settings.event_max_iterations}, evaluate);
+      {lo.sigma, g(lo.point), lo.point}, {hi.sigma, g(hi.point), hi.point}, search, evaluate);
   out = std::move(r.best.at);
-  const double width = r.width();
-  if (width > settings.event_tolerance && r.within_value(value_tolerance)) {
-    located = true;
-    return std::min(width, r.secant_distance());
-  }
-  located = width <= settings.event_tolerance;
-  return width;
+  located = r.converged(search);
+  return r.accuracy(search);
 }
 
 double locate_change(const std::function<std::vector<int>(const TangentPoint&)>& value,

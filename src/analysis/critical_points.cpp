@@ -56,11 +56,9 @@ double root_between(const std::function<double(double)>& r, double lo, double hi
     failed = failed || std::isnan(v);
     return v;
   };
-  const cont::RootBracket<double> b =
-      cont::brent_root(value, lo, hi, rlo, rhi, {tolerance, value_tolerance, 200});
-  accuracy = b.width() > tolerance && b.within_value(value_tolerance)
-                 ? std::min(b.width(), b.secant_distance())
-                 : b.width();
+  const cont::RootSearch search{tolerance, value_tolerance, 200};
+  const cont::RootBracket<double> b = cont::brent_root(value, lo, hi, rlo, rhi, search);
+  accuracy = b.accuracy(search);
   return failed ? std::nan("") : b.best.x;
 }
 

@@ -127,11 +127,10 @@ void locate_onsets(IndentationSetup& s, PathResult& r, const cont::Vector& z_pre
       f = at.state.failure[k].index - 1;
       return true;
     };
-    const double tolerance = 1e-10 * (1 + b.state.depth);
+    const cont::RootSearch search{1e-10 * (1 + b.state.depth), kOnsetIndexTolerance, 60};
     if (solve) {
-      const cont::RootBracket<OnsetTrial> root =
-          cont::brent_root<OnsetTrial>({a.state.depth, fa, {}}, {b.state.depth, fb, {}},
-                                       {tolerance, kOnsetIndexTolerance, 60}, evaluate);
+      const cont::RootBracket<OnsetTrial> root = cont::brent_root<OnsetTrial>(
+          {a.state.depth, fa, {}}, {b.state.depth, fb, {}}, search, evaluate);
       // The bracket's ends are the grid's points, whose states are not trials: only a trial
       // (a solved state) is an event point.
       if (!failed && root.best.at.z.size() > 0) {
@@ -139,7 +138,7 @@ void locate_onsets(IndentationSetup& s, PathResult& r, const cont::Vector& z_pre
         e.x = root.best.at.z;
         e.monitors = monitor_values(root.best.at.state, columns);
         e.accuracy = std::min(root.width(), root.secant_distance());
-        e.located = root.width() <= tolerance || root.within_value(kOnsetIndexTolerance);
+        e.located = root.converged(search);
       }
     }
     r.events.push_back(e);

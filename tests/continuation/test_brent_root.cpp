@@ -59,6 +59,9 @@ TEST(BrentRoot, ValueToleranceStopsEarlyWithAnHonestDistance) {
   const double error = std::abs(r.best.x - kDottie);
   EXPECT_LE(error, 1.5 * r.secant_distance() + 1e-16);
   EXPECT_LE(r.secant_distance(), r.width());
+  const RootSearch search{1e-15, 1e-6, 100};
+  EXPECT_TRUE(r.converged(search));
+  EXPECT_EQ(r.accuracy(search), r.secant_distance());  // the value test stopped it
 }
 
 // A NaN ends the search with the bracket so far: never a NaN as the best estimate.
@@ -73,6 +76,8 @@ TEST(BrentRoot, UnevaluableFunctionEndsTheSearchWithTheBracketSoFar) {
   EXPECT_EQ(evaluations, 3);
   EXPECT_FALSE(std::isnan(r.best.f));
   EXPECT_GT(r.width(), 1e-14);
+  EXPECT_FALSE(r.converged({1e-14, 0.0, 100}));
+  EXPECT_EQ(r.accuracy({1e-14, 0.0, 100}), r.width());
   EXPECT_LE(r.best.x, 1.0);
   EXPECT_GE(r.best.x, 0.0);
 }
