@@ -253,7 +253,10 @@ TEST(SupportFrame, D6264Backed_HertzLaw_ForceBalance_ReactionsUnderTheIndenterOn
 // D7136: the plate bends into the cut-out and bears on its edges; the overhangs beyond them turn
 // up about those edges and lift off the frame, most at the middle of the plate's edges, where the
 // frame then carries nothing. With the preset's clamps (+-50, +-43.75) the plate's corners stay
-// down (measured: 3.4 N at each corner at 1 mm): the overhang twists about the clamps.
+// down (measured: 3.4 N at each corner at 1 mm): the overhang twists about the clamps, which hold
+// it down. A CalculiX solid model of the same plate bears at the corners too, and agrees on the
+// bearing nodes (997 of 1001) and the clamps' share of the force (0.88 / 0.90):
+// bench/calculix/d7136_frame.py, docs/theory/contact.md.
 TEST(SupportFrame, D7136_OverhangsLiftOff_ReactionsOnlyWhereItBears) {
   const CaseFile c = fixture_case(kD7136);
   const PathResult r = run_path(c, 1.0, 0.25);
@@ -284,6 +287,37 @@ TEST(SupportFrame, D7136_OverhangsLiftOff_ReactionsOnlyWhereItBears) {
   EXPECT_EQ(lifted, 4);
   EXPECT_EQ(bearing, 2);
   EXPECT_LT(s.frame_contact_nodes, static_cast<int>(s.frame_nodes.size()) / 2);
+}
+
+// Without clamps the plate only rests on the frame, and its corners rise: a plate simply supported
+// on a rectangle needs downward corner forces to keep its corners down (Kirchhoff's corner
+// reactions, R = 2 D (1 - nu) w_xy; Timoshenko & Woinowsky-Krieger, Theory of Plates, 1959,
+// section 31), which a unilateral frame cannot give. So the cut-out's corners and the plate's
+// corners lift off and carry nothing, and the frame alone holds the indenter's force. (With the
+// preset's clamps, above, the clamps give that hold-down force and the corners stay down: a
+// CalculiX solid model on the same plan grid agrees, bench/calculix/d7136_frame.py.)
+TEST(SupportFrame, D7136WithoutClamps_CornersLiftOff_FrameHoldsTheForce) {
+  const CaseFile c = fixture_case("{type: astm_d7136, clamps: []}", "linear");
+  const PathResult r = run_path(c, 0.1, 0.05);
+  const IndentationState& s = r.points.back().state;
+  expect_frame_kkt(s);
+  EXPECT_NEAR(s.frame_force, s.force, 1e-7 * s.force);
+  const ShellModel m = build_shell_model(c);
+  double mu_max = 0;
+  for (double mu : s.frame_multipliers) mu_max = std::max(mu_max, mu);
+  int corners = 0;
+  for (std::size_t i = 0; i < s.frame_nodes.size(); ++i) {
+    const Vector3d& p = m.mesh.nodes[s.frame_nodes[i]];
+    const bool plate_corner =
+        std::abs(std::abs(p.x()) - 75) < 1e-9 && std::abs(std::abs(p.y()) - 50) < 1e-9;
+    const bool cut_out_corner =
+        std::abs(std::abs(p.x()) - 62.5) < 1e-9 && std::abs(std::abs(p.y()) - 37.5) < 1e-9;
+    if (!plate_corner && !cut_out_corner) continue;
+    ++corners;
+    EXPECT_GT(s.frame_gaps[i], 1e-3 * s.depth) << p.transpose();
+    EXPECT_LT(std::abs(s.frame_multipliers[i]), 1e-9 * mu_max) << p.transpose();
+  }
+  EXPECT_EQ(corners, 8);
 }
 
 // Against the same plate clamped on the cut-out's edge (same mesh, no frame): the clamped
