@@ -34,29 +34,9 @@ class ShiftSolve {
   const SymmetricFactorization& factorization_;
 };
 
-// Sorts ascending and fixes each vector's sign (largest entry positive), so that results are
-// reproducible whatever the solver's internal sign.
-void normalise(Vector values, Matrix vectors, Eigenpairs& out) {
-  std::vector<Eigen::Index> order(static_cast<std::size_t>(values.size()));
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&values](Eigen::Index a, Eigen::Index b) { return values(a) < values(b); });
-  out.values.resize(values.size());
-  out.vectors.resize(vectors.rows(), vectors.cols());
-  for (std::size_t j = 0; j < order.size(); ++j) {
-    const auto c = static_cast<Eigen::Index>(j);
-    Vector v = vectors.col(order[j]);
-    Eigen::Index imax = 0;
-    v.cwiseAbs().maxCoeff(&imax);
-    if (v(imax) < 0.0) v = -v;
-    out.values(c) = values(order[j]);
-    out.vectors.col(c) = v / v.norm();
-  }
-}
-
 void dense_lowest(const SparseMatrix& K, int k, Eigenpairs& out) {
   const Eigen::SelfAdjointEigenSolver<Matrix> dense{Matrix(K)};
-  normalise(dense.eigenvalues().head(k), dense.eigenvectors().leftCols(k), out);
+  normalise_eigenpairs(dense.eigenvalues().head(k), dense.eigenvectors().leftCols(k), out);
 }
 
 // The k eigenpairs nearest the factorization's shift. false if Lanczos did not converge.
@@ -80,6 +60,24 @@ bool nearest(const SymmetricFactorization& factorization, int k, const EigenOpti
 }
 
 }  // namespace
+
+void normalise_eigenpairs(Vector values, Matrix vectors, Eigenpairs& out) {
+  std::vector<Eigen::Index> order(static_cast<std::size_t>(values.size()));
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&values](Eigen::Index a, Eigen::Index b) { return values(a) < values(b); });
+  out.values.resize(values.size());
+  out.vectors.resize(vectors.rows(), vectors.cols());
+  for (std::size_t j = 0; j < order.size(); ++j) {
+    const auto c = static_cast<Eigen::Index>(j);
+    Vector v = vectors.col(order[j]);
+    Eigen::Index imax = 0;
+    v.cwiseAbs().maxCoeff(&imax);
+    if (v(imax) < 0.0) v = -v;
+    out.values(c) = values(order[j]);
+    out.vectors.col(c) = v / v.norm();
+  }
+}
 
 bool lowest_eigenpairs(const SparseMatrix& K, int k, const SymmetricFactorization& factorization,
                        const EigenOptions& options, Eigenpairs& out,
@@ -114,7 +112,7 @@ bool lowest_eigenpairs(const SparseMatrix& K, int k, const SymmetricFactorizatio
     const double sigma = current->shift();
     const int found_below = static_cast<int>((values.array() < sigma).count());
     if (found_below >= current->inertia().negative) {
-      normalise(values, vectors, out);
+      normalise_eigenpairs(values, vectors, out);
       return true;
     }
     const double lowest = values.minCoeff();

@@ -36,6 +36,10 @@ struct Eigenpairs {
   Matrix vectors;  // columns: unit (Euclidean) eigenvectors, sign fixed: largest entry positive
 };
 
+// Sorts the pairs ascending and makes each vector unit with its sign fixed (largest entry
+// positive), so that results are reproducible whatever a solver's internal sign.
+void normalise_eigenpairs(Vector values, Matrix vectors, Eigenpairs& out);
+
 // K symmetric, both triangles stored; `factorization` of K at its shift() (usually 0); `make`
 // builds the factorizations at lower shifts (empty: SparseLdlt). k is clipped to K's size. false
 // if Spectra did not converge or no usable shift was found.

@@ -32,9 +32,13 @@ bool analyse_stability(const SparseMatrix& K, const SparseMatrix& A, int modes, 
 }
 
 Vector multiplier_direction(const SparseMatrix& K, const SparseMatrix& A, const Vector& v) {
+  return multiplier_direction_from_product(A, K * v);
+}
+
+Vector multiplier_direction_from_product(const SparseMatrix& A, const Vector& Kv) {
   const SparseMatrix AAt = A * SparseMatrix(A.transpose());
   Eigen::SimplicialLDLT<SparseMatrix> gram(AAt);
-  const Vector rhs = -(A * (K * v));
+  const Vector rhs = -(A * Kv);
   return gram.solve(rhs);
 }
 

@@ -33,5 +33,7 @@ bool analyse_stability(const SparseMatrix& K, const SparseMatrix& A, int modes, 
 // [K A'; A 0] when v = Z w with Z' K Z w = 0 (K v then lies in range(A'), and this is its exact
 // coefficient); the least-squares multiplier change elsewhere. A full row rank.
 Vector multiplier_direction(const SparseMatrix& K, const SparseMatrix& A, const Vector& v);
+// The same from the product K v.
+Vector multiplier_direction_from_product(const SparseMatrix& A, const Vector& Kv);
 
 }  // namespace si::cont

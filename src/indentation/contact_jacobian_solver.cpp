@@ -90,6 +90,10 @@ void ContactJacobianSolver::transpose_transform(
 // H = sym(T^T A) + condensed rows from the current linearisation; false if H is not positive
 // definite.
 bool ContactJacobianSolver::refresh_preconditioner() {
+  return refresh_with(rows_);
+}
+
+bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& condensed) {
   if (rotation_slots_.empty())
     for (std::size_t i = 0; i < rotations_.size(); ++i) {
       const ShellChart::RotationBlock& r = rotations_[i];
@@ -126,8 +130,8 @@ bool ContactJacobianSolver::refresh_preconditioner() {
   }
   double* hv = H_.valuePtr();
   for (int k = 0; k < H_.nonZeros(); ++k) hv[k] = 0.5 * (m[k] + m[mirror_[k]]);
-  for (std::size_t i = 0; i < rows_.size(); ++i) {
-    const ContactJacobianRow& row = rows_[i];
+  for (std::size_t i = 0; i < condensed.size(); ++i) {
+    const ContactJacobianRow& row = condensed[i];
     if (row.b == 0.0) continue;
     const double w = row.b / row.a;
     for (int r = 0; r < 5; ++r)
@@ -143,12 +147,50 @@ bool ContactJacobianSolver::refresh_preconditioner() {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
   }
-  pre_rows_ = rows_;
+  pre_rows_ = condensed;
   pre_rotations_ = rotations_;
   has_preconditioner_ = true;
   preconditioner_age_ = 0;
   last_products_ = 0;
   return true;
+}
+
+bool ContactJacobianSolver::refresh_penalized(const std::vector<int>& rows) {
+  if (J_ == nullptr || use_lu_ || border_) return false;
+  // Weight 0 (b = 0: uncondensed) on every row but the listed ones, kappa / floor on those: the
+  // floored a of a fully active row (factorize()), whatever its b.
+  std::vector<ContactJacobianRow> condensed = rows_;
+  for (ContactJacobianRow& row : condensed) row.b = 0.0;
+  for (int i : rows) {
+    SI_REQUIRE(i >= 0 && i < static_cast<int>(rows_.size()), "contact Jacobian: no such row");
+    ContactJacobianRow& row = condensed[static_cast<std::size_t>(i)];
+    row.b =
+        rows_[static_cast<std::size_t>(i)].b > 0.0 ? rows_[static_cast<std::size_t>(i)].b : kappa_;
+    row.a = kCondensationFloor * row.b / kappa_;
+  }
+  if (refresh_with(condensed)) return true;
+  // What factorize() would have done at this linearisation.
+  if (!refresh_preconditioner()) factor_fallback();
+  return false;
+}
+
+Eigen::VectorXd ContactJacobianSolver::solve_shell_block(const Eigen::VectorXd& r) const {
+  SI_REQUIRE(has_preconditioner_ && r.size() == num_shell_,
+             "contact Jacobian: no shell factor to solve with");
+  return cholesky_->solve(r);
+}
+
+SparseMatrix ContactJacobianSolver::chart_gradients(const std::vector<int>& rows) const {
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const ContactJacobianRow& row = rows_[static_cast<std::size_t>(rows[k])];
+    for (int c = 0; c < 5; ++c)
+      if (row.eq[c] >= 0 && row.gradient[c] != 0.0)
+        t.emplace_back(static_cast<int>(k), row.eq[c], row.gradient[c]);
+  }
+  SparseMatrix G(static_cast<Eigen::Index>(rows.size()), num_shell_);
+  G.setFromTriplets(t.begin(), t.end());
+  return G;
 }
 
 void ContactJacobianSolver::factor_fallback() {

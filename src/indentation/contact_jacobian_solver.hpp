@@ -68,6 +68,16 @@ class ContactJacobianSolver {
 
   const ContactJacobianCounters& counters() const { return counters_; }
 
+  // The stability analysis's factor (jacobian_solver.hpp, penalized_shell): the preconditioner
+  // made anew at the last factorize()'s linearisation with weight kappa / floor on the listed
+  // rows and none on the others. false if there is none to make (a border, this linearisation on
+  // the LU) or it is not positive definite; the solver is then as factorize() left it.
+  bool refresh_penalized(const std::vector<int>& rows);
+  // P^-1 r on the shell block with the current factor (chart coordinates).
+  Eigen::VectorXd solve_shell_block(const Eigen::VectorXd& r) const;
+  // G~_i^T of the listed rows of the last factorize(): rows.size() x num_shell.
+  SparseMatrix chart_gradients(const std::vector<int>& rows) const;
+
   // Forgets the preconditioner and the fallback LU (the next factorize() makes fresh ones), as a
   // new solver would have none: the solves that follow are those of a new solver, bit for bit.
   void forget_preconditioner();
@@ -80,6 +90,9 @@ class ContactJacobianSolver {
   void analyze_shell(const SparseMatrix& J, int num_shell);
   void map_jacobian(const SparseMatrix& J);
   bool refresh_preconditioner();
+  // H = sym(T^T A) + sum_i (b_i / a_i) G~_i G~_i^T over `condensed` (the current rows with their
+  // weights), factored; kept with its rows on success.
+  bool refresh_with(const std::vector<ContactJacobianRow>& condensed);
   void apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
   // P^-1 on the shell and contact rows (in and out without the border).
   void apply_condensed(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;

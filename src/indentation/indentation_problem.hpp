@@ -21,6 +21,7 @@
 // state, so the only nonlinearity is phi; this is the paper's linear setting.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -154,6 +155,16 @@ class IndentationProblem : public cont::Problem {
   void build_pattern();
   // r_free = r(x) - the terms' forces; returns the node states at z.
   const std::vector<NodeState>& shell_terms(const cont::Vector& z, double h, cont::Vector& r_free);
+  // stability() from the Krylov solver's own factor at the point factorize() was last called at
+  // (continuation/penalized_stability.hpp); false when that route does not apply (another point,
+  // a direct solver, a penalised matrix that is not positive definite).
+  bool penalized_stability(const cont::Vector& z, double h, int modes, cont::Stability& out);
+  bool factored_at(const cont::Vector& z, double h) const;
+  // Each mode v (shell part, chart coordinates) as unknowns z, its multipliers' part from
+  // cont::multiplier_direction with the product H v given.
+  void complete_modes(const std::function<cont::Vector(const cont::Vector&)>& H_times,
+                      const SparseMatrix& A, const std::vector<int>& multipliers,
+                      std::vector<cont::Vector>& modes) const;
   // The quantities of the monitors (no gaps, no assembly); the probe's only `with_probe`.
   void quantities(const cont::Vector& z, const std::vector<NodeState>& s, double h,
                   IndentationState& out, bool with_probe = true) const;

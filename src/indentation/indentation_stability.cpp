@@ -14,10 +14,12 @@
 // multipliers' part solves H v = A' mu in the least-squares sense (a null vector of the Jacobian
 // at a critical point), inactive multipliers stay 0.
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "continuation/cholmod_factorization.hpp"
+#include "continuation/penalized_stability.hpp"
 #include "continuation/stability_analysis.hpp"
 #include "core/error.hpp"
 #include "indentation/indentation_problem.hpp"
@@ -58,7 +60,7 @@ IndentationProblem::StabilityMatrices IndentationProblem::stability_matrices(con
   const int nf = shell_.size();
   SparseMatrix J;  // assembled here unless factorize() was at this very point
   SparseMatrix T;
-  if (factored_ && factored_->h == h && factored_->z.size() == z.size() && factored_->z == z) {
+  if (factored_at(z, h)) {
     T = ShellChart::transform(nf, factored_->rotations);
   } else {
     cont::Vector r_free;
@@ -83,8 +85,17 @@ IndentationProblem::StabilityMatrices IndentationProblem::stability_matrices(con
   return m;
 }
 
+bool IndentationProblem::factored_at(const cont::Vector& z, double h) const {
+  return factored_ && factored_->h == h && factored_->z.size() == z.size() && factored_->z == z;
+}
+
 bool IndentationProblem::stability(const cont::Vector& z, double h, int modes,
                                    cont::Stability& out) {
+  if (penalized_stability(z, h, modes, out)) {
+    ++counters_.stability_from_preconditioner;
+    return true;
+  }
+  ++counters_.stability_direct;
   StabilityMatrices m;
   try {
     m = stability_matrices(z, h);
@@ -95,19 +106,68 @@ bool IndentationProblem::stability(const cont::Vector& z, double h, int modes,
   cont::StabilityOptions options;
   options.factorization = cont::cholmod_first_factorization();
   if (!cont::analyse_stability(m.H, m.A, modes, out, options)) return false;
+  complete_modes([&m](const cont::Vector& v) { return cont::Vector(m.H * v); }, m.A, m.multipliers,
+                 out.modes);
+  return true;
+}
+
+// At a point the continuation has just factored (it does before it asks), the Krylov solver's
+// preconditioner made anew with the strongly active rows as penalties is P = H + rho A'A, whose
+// Cholesky decides stability exactly when it succeeds and whose solves give the lowest
+// eigenpairs (continuation/penalized_stability.hpp); it then serves the path as its
+// preconditioner, so the factorization is shared instead of added. Where P is not positive
+// definite (at or past a critical point) the direct analysis below takes over.
+bool IndentationProblem::penalized_stability(const cont::Vector& z, double h, int modes,
+                                             cont::Stability& out) {
+  if (!factored_at(z, h)) return false;
+  std::vector<int> multipliers;
+  {
+    const CachesKept kept(parts_.terms);
+    active_constraint_gradients(z, h, &multipliers);
+  }
   const int nf = shell_.size();
-  for (cont::Vector& v : out.modes) {
+  std::vector<int> rows;
+  for (int index : multipliers) rows.push_back(index - nf);
+  const std::optional<PenalizedShell> shell = solver_->penalized_shell(rows);
+  if (!shell) return false;
+  cont::EigenOptions eigen;
+  if (!cont::stability_from_penalized(shell->solve, shell->gradients, nf, modes, eigen, out))
+    return false;
+  // H v = sym(T' J_xx) v without forming H: (T' J_xx v + J_xx' T v) / 2.
+  const SparseMatrix T = ShellChart::transform(nf, factored_->rotations);
+  const auto shell_block = [this, nf](const cont::Vector& v, bool transposed) {
+    cont::Vector full = cont::Vector::Zero(size());
+    full.head(nf) = v;
+    return cont::Vector(
+        (transposed ? cont::Vector(jacobian_.transpose() * full) : cont::Vector(jacobian_ * full))
+            .head(nf));
+  };
+  const auto H_times = [&](const cont::Vector& v) {
+    return cont::Vector(0.5 * (T.transpose() * shell_block(v, false) + shell_block(T * v, true)));
+  };
+  complete_modes(H_times, shell->gradients, multipliers, out.modes);
+  return true;
+}
+
+void IndentationProblem::complete_modes(
+    const std::function<cont::Vector(const cont::Vector&)>& H_times, const SparseMatrix& A,
+    const std::vector<int>& multipliers, std::vector<cont::Vector>& modes) const {
+  const int nf = shell_.size();
+  for (cont::Vector& v : modes) {
     cont::Vector mode = cont::Vector::Zero(size());
     mode.head(nf) = v;
-    if (!m.multipliers.empty()) {
+    // One sign whichever route computed it: the largest shell component positive.
+    Eigen::Index largest = 0;
+    v.cwiseAbs().maxCoeff(&largest);
+    if (v[largest] < 0) mode.head(nf) = -v;
+    if (!multipliers.empty()) {
       // The Jacobian's multiplier columns are -G_i (not +A' of the bordered matrix).
-      const cont::Vector mu = -cont::multiplier_direction(m.H, m.A, v);
-      for (std::size_t k = 0; k < m.multipliers.size(); ++k)
-        mode[m.multipliers[k]] = mu[static_cast<Eigen::Index>(k)];
+      const cont::Vector mu = -cont::multiplier_direction_from_product(A, H_times(mode.head(nf)));
+      for (std::size_t k = 0; k < multipliers.size(); ++k)
+        mode[multipliers[k]] = mu[static_cast<Eigen::Index>(k)];
     }
     v = std::move(mode);
   }
-  return true;
 }
 
 }  // namespace si

@@ -63,6 +63,10 @@ struct IndentationCounters {
   long evaluations = 0;         // evaluate() calls that were not cached (output, monitors)
   long tangent_assemblies = 0;  // element assemblies actually computed, force + tangent
   long force_assemblies = 0;    // and force only (nonlinear kinematics)
+  // Stability analyses (path.stability) from the Krylov preconditioner's own factor, and by the
+  // direct route (Z'HZ factored: another point, a direct solver, or not positive definite).
+  long stability_from_preconditioner = 0;
+  long stability_direct = 0;
 };
 
 // A quantity of the state the continuation follows (Problem::monitors; the path's result

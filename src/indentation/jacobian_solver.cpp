@@ -35,6 +35,12 @@ class KrylovJacobianSolver final : public JacobianSolver {
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override { return solver_.solve(rhs); }
   ContactJacobianCounters counters() const override { return solver_.counters(); }
+  std::optional<PenalizedShell> penalized_shell(const std::vector<int>& rows) override {
+    if (!solver_.refresh_penalized(rows)) return std::nullopt;
+    return PenalizedShell{
+        [this](const cont::Vector& in, cont::Vector& out) { out = solver_.solve_shell_block(in); },
+        solver_.chart_gradients(rows)};
+  }
 
  private:
   ContactJacobianSolver solver_;

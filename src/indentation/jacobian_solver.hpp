@@ -7,8 +7,10 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "continuation/penalized_stability.hpp"
 #include "core/sparse.hpp"
 #include "indentation/contact_jacobian_solver.hpp"
 #include "model/shell_chart.hpp"
@@ -18,6 +20,12 @@ namespace si {
 
 // kPreconditionedKrylov falls back to UMFPACK for problems whose rows do not condense.
 enum class JacobianSolverKind { kPreconditionedKrylov, kUmfpack, kKlu };
+
+// The stability analysis's penalised shell factor (continuation/penalized_stability.hpp).
+struct PenalizedShell {
+  cont::PenalizedSolve solve;  // P^-1 on the shell block, in chart coordinates
+  SparseMatrix gradients;      // the penalised rows' G~_i^T: rows x shell unknowns
+};
 
 class JacobianSolver {
  public:
@@ -39,6 +47,15 @@ class JacobianSolver {
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) = 0;
   // The Krylov solver's work (zero for a direct LU).
   virtual ContactJacobianCounters counters() const { return {}; }
+  // Refactors the preconditioner at the last factorize()'s linearisation as P = sym(T^T A) +
+  // rho sum_i G~_i G~_i^T over the contact rows `rows` (indices among the terms' rows; rho =
+  // kappa / the condensation floor), the other rows uncondensed, and keeps it for the solves that
+  // follow: a preconditioner like any other. Its solve is valid until the next factorize().
+  // Nothing if there is no such factor to make (a direct LU; this linearisation on the fallback
+  // LU or with a border) or P is not positive definite; the solver is then as factorize() left it.
+  virtual std::optional<PenalizedShell> penalized_shell(const std::vector<int>& /*rows*/) {
+    return std::nullopt;
+  }
 };
 
 // condensable: whether every part of the problem has condensable rows or borders. kappa: the
