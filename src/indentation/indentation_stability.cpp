@@ -115,7 +115,9 @@ bool IndentationProblem::stability(const cont::Vector& z, double h, int modes,
 // preconditioner made anew with the strongly active rows as penalties is P = H + rho A'A, whose
 // Cholesky decides stability exactly when it succeeds and whose solves give the lowest
 // eigenpairs (continuation/penalized_stability.hpp); it then serves the path as its
-// preconditioner, so the factorization is shared instead of added. Where P is not positive
+// preconditioner. (It did not spare the path any of its own refreshes, measured: those come
+// within 2-3 linearisations of every step whatever factor it starts from; what this route
+// saves is Z, Z'HZ and its factorization, docs/performance.md.) Where P is not positive
 // definite (at or past a critical point) the direct analysis below takes over.
 bool IndentationProblem::penalized_stability(const cont::Vector& z, double h, int modes,
                                              cont::Stability& out) {
