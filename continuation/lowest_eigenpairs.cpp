@@ -9,6 +9,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "continuation/spectra_lanczos.hpp"
+
 namespace si::cont {
 namespace {
 
@@ -44,16 +46,11 @@ bool nearest(const SymmetricFactorization& factorization, int k, const EigenOpti
              Vector& values, Matrix& vectors) {
   const auto n = factorization.rows();
   ShiftSolve op(factorization);
-  const Eigen::Index ncv = std::min<Eigen::Index>(n, std::max(2 * k + 1, options.subspace));
-  Spectra::SymEigsShiftSolver<ShiftSolve> solver(op, k, ncv, factorization.shift());
-  solver.init();
-  try {
-    solver.compute(Spectra::SortRule::LargestMagn, options.max_iterations, options.tolerance,
-                   Spectra::SortRule::SmallestAlge);
-  } catch (const std::runtime_error&) {
+  Spectra::SymEigsShiftSolver<ShiftSolve> solver(op, k, lanczos_basis(n, k, options),
+                                                 factorization.shift());
+  if (!run_lanczos(solver, Spectra::SortRule::LargestMagn, Spectra::SortRule::SmallestAlge,
+                   options))
     return false;
-  }
-  if (solver.info() != Spectra::CompInfo::Successful) return false;
   values = solver.eigenvalues();
   vectors = solver.eigenvectors();
   return values.size() == k && values.allFinite();

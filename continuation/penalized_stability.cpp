@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "continuation/spectra_lanczos.hpp"
+
 namespace si::cont {
 namespace {
 
@@ -61,16 +63,10 @@ bool stability_from_penalized(const PenalizedSolve& solve, const SparseMatrix& A
   ProjectedInverse op(solve, pi, n);
   // range(A') is in the operator's kernel (theta = 0): the Krylov space needs no more room than
   // for Z'KZ itself.
-  const Eigen::Index ncv = std::min<Eigen::Index>(free, std::max(2 * k + 1, options.subspace));
-  Spectra::SymEigsSolver<ProjectedInverse> lanczos(op, k, ncv);
-  lanczos.init();
-  try {
-    lanczos.compute(Spectra::SortRule::LargestAlge, options.max_iterations, options.tolerance,
-                    Spectra::SortRule::LargestAlge);
-  } catch (const std::runtime_error&) {
+  Spectra::SymEigsSolver<ProjectedInverse> lanczos(op, k, lanczos_basis(free, k, options));
+  if (!run_lanczos(lanczos, Spectra::SortRule::LargestAlge, Spectra::SortRule::LargestAlge,
+                   options))
     return false;
-  }
-  if (lanczos.info() != Spectra::CompInfo::Successful) return false;
   const Vector theta = lanczos.eigenvalues();
   // P positive definite makes Pi P^-1 Pi positive semidefinite: a theta <= 0 among the largest is
   // a failed solve, not an eigenvalue.
