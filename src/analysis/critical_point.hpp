@@ -11,8 +11,8 @@ namespace si {
 
 enum class CriticalKind {
   kNonlinearityOnset,  // |T - T_lin| reaches path.nonlinearity_fraction of T_lin
-  kStiffnessMin,       // d2T/dh2 from - to +: a minimum of the tangent stiffness dT/dh
-  kStiffnessMax,       // d2T/dh2 from + to -: a maximum of dT/dh
+  kStiffnessMin,       // a minimum of the tangent stiffness dT/dh over a well of 5 % of it
+  kStiffnessMax,       // a maximum of dT/dh, the same (analysis/stiffness_wells.hpp)
   kDepthTurn,          // dh/ds = 0: the depth turns (snap-back), a limit point under depth control
   kForceMax,           // dT/ds = 0 from + to -: a limit point under force control (snap-through)
   kForceMin,           // dT/ds = 0 from - to +

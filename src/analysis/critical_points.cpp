@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "analysis/grid_features.hpp"
 #include "analysis/path_columns.hpp"
+#include "analysis/stiffness_wells.hpp"
 #include "continuation/brent_root.hpp"
 #include "continuation/curve_features.hpp"
 #include "continuation/kinsol_corrector.hpp"
@@ -92,6 +94,96 @@ cont::Point force_point(const std::vector<PathPoint>& pts, int i, int force_slop
   return p;
 }
 
+// The well's relative depth: the stiffness must rise by 5 % of its extreme value on both sides
+// (the onset's default fraction; larger than the jumps of a node entering contact on the cap's
+// meshes of 1.25 mm and finer, docs/critical-points.md).
+constexpr double kStiffnessWellFraction = 0.05;
+
+bool has_slopes(const PathPoint& a, const PathPoint& b, int force_slope) {
+  return std::isfinite(slope_at(a, force_slope)) && std::isfinite(slope_at(b, force_slope));
+}
+
+// The index k of the segment (k - 1, k) of the points holding depth d (1 <= k < size).
+int segment_holding(const std::vector<PathPoint>& points, double d) {
+  int k = 1;
+  while (k + 1 < static_cast<int>(points.size()) && points[k].state.depth < d) ++k;
+  return k;
+}
+
+// Every point with depth in [from, to] presses the same nodes.
+bool one_contact_set(const std::vector<PathPoint>& points, double from, double to) {
+  std::optional<std::vector<int>> set;
+  for (const PathPoint& p : points) {
+    if (p.state.depth < from || p.state.depth > to) continue;
+    const std::vector<int> nodes = pressing_nodes(p.state);
+    if (set && nodes != *set) return false;
+    set = nodes;
+  }
+  return true;
+}
+
+// dT/dh at the points (their exact slopes), or where any point carries none, the secants of
+// the segments at their mid-depths.
+std::vector<StiffnessSample> stiffness_samples(const std::vector<PathPoint>& points,
+                                               int force_slope) {
+  std::vector<StiffnessSample> samples;
+  const bool exact = std::all_of(points.begin(), points.end(), [&](const PathPoint& p) {
+    return std::isfinite(slope_at(p, force_slope));
+  });
+  if (exact) {
+    for (const PathPoint& p : points) samples.push_back({p.state.depth, slope_at(p, force_slope)});
+    return samples;
+  }
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const IndentationState &a = points[i - 1].state, &b = points[i].state;
+    samples.push_back({0.5 * (a.depth + b.depth), (b.force - a.force) / (b.depth - a.depth)});
+  }
+  return samples;
+}
+
+// The sign changes of d2T/dh2 the curve-feature rules resolve between two points of one
+// contact set (grid_features.hpp), with the force and stiffness on the segment holding each.
+std::vector<CriticalPoint> local_inflections(const std::vector<PathPoint>& points,
+                                             int force_slope) {
+  cont::CurveScales scales;
+  double force_magnitude = 0, slope_magnitude = 0;
+  for (const PathPoint& pt : points) {
+    cont::Point p;
+    p.p = pt.state.depth;
+    p.monitors = Eigen::VectorXd::Constant(1, pt.state.force);
+    scales.include(p);
+    force_magnitude = std::max(force_magnitude, std::abs(pt.state.force));
+    const double s = slope_at(pt, force_slope);
+    if (std::isfinite(s)) slope_magnitude = std::max(slope_magnitude, std::abs(s));
+  }
+  const cont::Indicator extremum{cont::EventType::kSlopeMin, 0, -1};
+  std::vector<CriticalPoint> found;
+  for (const cont::Event& e : grid_features(
+           points, extremum,
+           [&](int i) {
+             return force_point(points, i, force_slope, force_magnitude, slope_magnitude);
+           },
+           scales)) {
+    CriticalPoint c;
+    c.kind = e.type == cont::EventType::kSlopeMin ? CriticalKind::kStiffnessMin
+                                                  : CriticalKind::kStiffnessMax;
+    c.depth = e.p;
+    c.accuracy = e.accuracy;
+    // The force and the stiffness on the segment of points holding the depth (the slopes
+    // linearly, or the segment's secant where the points carry none).
+    int k = e.step;
+    while (k > 1 && points[k - 1].state.depth > e.p) --k;
+    const PathPoint &a = points[k - 1], &b = points[k];
+    const double t = (e.p - a.state.depth) / (b.state.depth - a.state.depth);
+    const bool slopes = has_slopes(a, b, force_slope);
+    c.force = force_between(a, b, e.p, force_slope, slopes);
+    c.stiffness = slopes ? (1 - t) * slope_at(a, force_slope) + t * slope_at(b, force_slope)
+                         : (b.state.force - a.state.force) / (b.state.depth - a.state.depth);
+    found.push_back(c);
+  }
+  return found;
+}
+
 CriticalPoint event_point(CriticalKind kind, const cont::Event& e, int force) {
   CriticalPoint c;
   c.kind = kind;
@@ -131,8 +223,7 @@ void find_nonlinearity_onset(const std::vector<PathPoint>& points, int force_slo
       r_previous = r;
       continue;
     }
-    const bool slopes =
-        std::isfinite(slope_at(a, force_slope)) && std::isfinite(slope_at(b, force_slope));
+    const bool slopes = has_slopes(a, b, force_slope);
     const auto root = [&](bool hermite, double& width) {
       return root_between(
           [&](double h) { return deviation(h, force_between(a, b, h, force_slope, hermite)); },
@@ -172,41 +263,28 @@ void find_nonlinearity_onset(const std::vector<PathPoint>& points, int force_slo
 
 std::vector<CriticalPoint> force_inflections(const std::vector<PathPoint>& all, int force_slope) {
   const std::vector<PathPoint> points(all.begin(), all.begin() + first_passage(all));
-  cont::CurveScales scales;
-  double force_magnitude = 0, slope_magnitude = 0;
-  for (const PathPoint& pt : points) {
-    cont::Point p;
-    p.p = pt.state.depth;
-    p.monitors = Eigen::VectorXd::Constant(1, pt.state.force);
-    scales.include(p);
-    force_magnitude = std::max(force_magnitude, std::abs(pt.state.force));
-    const double s = slope_at(pt, force_slope);
-    if (std::isfinite(s)) slope_magnitude = std::max(slope_magnitude, std::abs(s));
-  }
-  const cont::Indicator extremum{cont::EventType::kSlopeMin, 0, -1};
+  const std::vector<CriticalPoint> local = local_inflections(points, force_slope);
+  const std::vector<StiffnessSample> samples = stiffness_samples(points, force_slope);
   std::vector<CriticalPoint> found;
-  for (const cont::Event& e : grid_features(
-           points, extremum,
-           [&](int i) {
-             return force_point(points, i, force_slope, force_magnitude, slope_magnitude);
-           },
-           scales)) {
+  for (const StiffnessWell& well : stiffness_wells(samples, kStiffnessWellFraction)) {
+    // A well on one contact set is a smooth curve: its sign change of d2T/dh2 is exact there.
+    std::vector<CriticalPoint> inside;
+    for (const CriticalPoint& c : local)
+      if (c.kind == well.kind && c.depth > well.from && c.depth < well.to) inside.push_back(c);
+    if (inside.size() == 1 && one_contact_set(points, well.from, well.to)) {
+      found.push_back(inside.front());
+      continue;
+    }
+    const std::optional<StiffnessVertex> v = fitted_vertex(samples, well);
+    if (!v) continue;
     CriticalPoint c;
-    c.kind = e.type == cont::EventType::kSlopeMin ? CriticalKind::kStiffnessMin
-                                                  : CriticalKind::kStiffnessMax;
-    c.depth = e.p;
-    c.accuracy = e.accuracy;
-    // The force and the stiffness on the segment of points holding the depth (the slopes
-    // linearly, or the segment's secant where the points carry none).
-    int k = e.step;
-    while (k > 1 && points[k - 1].state.depth > e.p) --k;
-    const PathPoint &a = points[k - 1], &b = points[k];
-    const double t = (e.p - a.state.depth) / (b.state.depth - a.state.depth);
-    const bool slopes =
-        std::isfinite(slope_at(a, force_slope)) && std::isfinite(slope_at(b, force_slope));
-    c.force = force_between(a, b, e.p, force_slope, slopes);
-    c.stiffness = slopes ? (1 - t) * slope_at(a, force_slope) + t * slope_at(b, force_slope)
-                         : (b.state.force - a.state.force) / (b.state.depth - a.state.depth);
+    c.kind = well.kind;
+    c.depth = v->depth;
+    c.accuracy = v->accuracy;
+    c.stiffness = v->stiffness;
+    const int k = segment_holding(points, v->depth);
+    c.force = force_between(points[k - 1], points[k], v->depth, force_slope,
+                            has_slopes(points[k - 1], points[k], force_slope));
     found.push_back(c);
   }
   return found;

@@ -10,9 +10,12 @@
 //    error bound then being the distance to the root found with the linear interpolant (the
 //    Hermite root is O(dh^4), the linear one O(dh^2)), or the bracket itself where a slope is
 //    unknown or the contact set changes inside it;
-//  * the inflections of T(h): sign changes of d2T/dh2, i.e. extrema of the tangent stiffness
-//    dT/dh (kStiffnessMin where it has a minimum), resolved by the curve-feature rules
-//    (grid_features.hpp) - never at a kink of a contact change, never inside roundoff;
+//  * the inflections of T(h): extrema of the tangent stiffness dT/dh (kStiffnessMin where it has
+//    a minimum) that hold at the curve's scale: the stiffness rises (falls) by 5 % of its
+//    extreme value on both sides (stiffness_wells.hpp). In a well on one contact set, the sign
+//    change of d2T/dh2 resolved by the curve-feature rules (grid_features.hpp: never inside
+//    roundoff); across contact kinks, the vertex of the parabola fitted to the well's stiffness,
+//    its accuracy twice the vertex's standard error;
 //  * limit points: the continuation's located depth turns (dh/ds = 0) and force extrema
 //    (dT/ds = 0, the limit points of the same shell under force control);
 //  * bifurcations (path.stability): the located stability changes whose depth does not turn.
@@ -51,7 +54,8 @@ void watch_point(OnsetWatch& watch, const PathPoint& point, const cont::Vector& 
 // The run's callback with `watch` fed every point first (a null watch: the callback itself).
 PathCallback watching(const std::shared_ptr<OnsetWatch>& watch, const PathCallback& callback);
 
-// The resolved inflections of T(h) on `points` (force_slope as above: exact slopes where known).
+// The stiffness extrema of T(h) on `points` (force_slope as above: exact slopes where known), in
+// depth order.
 std::vector<CriticalPoint> force_inflections(const std::vector<PathPoint>& points, int force_slope);
 
 // Limit points and bifurcations among a run's events (force = the force_N monitor's position in

@@ -177,6 +177,42 @@ TEST(CriticalPoints, KinksWhereNodesEnterContactAreNotInflections) {
   EXPECT_TRUE(force_inflections(pts, 0).empty());
 }
 
+// The stiffness 10 + 2 (h - 3)^2 with a node entering contact every 0.13 mm (the stiffness
+// falls by 2 % of its minimum within each contact set and jumps up where a node enters): no sign
+// change of d2T/dh2 between two points of one contact set holds the minimum, as on the cap's
+// fine meshes, but the well does: its fitted vertex at 3 mm within 0.05 mm and its accuracy.
+// T is integrated exactly on each contact set; the same curve without kinks gives the exact
+// sign change (one contact set: the curve-feature rules' root, linear in T'').
+TEST(CriticalPoints, StiffnessMinimumAcrossContactKinksFromItsWell) {
+  for (bool kinks : {true, false}) {
+    const double period = 0.13, jump = kinks ? 0.2 : 0.0, step = 0.02;
+    // s = 10 + 2 (h - 3)^2 + jump (0.5 - phase), phase = (h mod period) / period.
+    const auto T = [&](double h) {
+      const double pieces = std::floor(h / period), phase = h - pieces * period;
+      // A whole period of the sawtooth integrates to zero.
+      const double saw = jump * (0.5 * phase - 0.5 * phase * phase / period);
+      return 10 * h + 2.0 / 3.0 * (std::pow(h - 3, 3) + 27) + saw;
+    };
+    std::vector<PathPoint> pts;
+    for (int i = 0; i * step <= 6.0 + 1e-12; ++i) {
+      const double h = i * step;
+      const int set = kinks ? static_cast<int>(std::floor(h / period)) : 0;
+      const double slope =
+          10 + 2 * (h - 3) * (h - 3) + jump * (0.5 - std::fmod(h, period) / period);
+      std::vector<int> nodes(static_cast<std::size_t>(set + 1));
+      for (int n = 0; n <= set; ++n) nodes[static_cast<std::size_t>(n)] = n;
+      pts.push_back(point(h, T(h), slope, nodes));
+    }
+    const auto found = force_inflections(pts, 0);
+    ASSERT_EQ(found.size(), 1u) << kinks;
+    EXPECT_EQ(found[0].kind, CriticalKind::kStiffnessMin);
+    EXPECT_NEAR(found[0].depth, 3.0, kinks ? 0.05 : 1e-6);
+    EXPECT_LE(std::abs(found[0].depth - 3.0), found[0].accuracy);
+    EXPECT_NEAR(found[0].stiffness, 10.0, 0.1);
+    EXPECT_NEAR(found[0].force, T(found[0].depth), 0.02);
+  }
+}
+
 TEST(CriticalPoints, EventsSortedIntoLimitPointsAndBifurcations) {
   const auto event = [](cont::EventType type, const std::string& monitor, double depth,
                         cont::Criticality criticality = cont::Criticality::kNone) {
