@@ -62,7 +62,11 @@ n = 0 singularity and dmu/ds = 0 coincide at the discrete level too.
 Path and critical points: pseudo-arclength continuation in (state, mu), with a scaled norm; for
 each harmonic the smallest eigenvalue of Q_n (n = 0 also dmu/ds) is watched, and a sign change
 between two points is located by a bracketed secant (Illinois) on the arclength of the
-corrector from the earlier point, to a relative 1e-12 in mu.
+corrector from the earlier point (arclength to 1e-13 of the step, so mu to about 1e-12).
+Reported: the first limit point (mu at dmu/ds = 0); the first bifurcation along the traced
+path, flagged before or after that limit point (the path is traced a scaled arclength of 2 past
+it; an "after" one lies on the unstable descending branch and is not critical); the critical
+point, the earlier of the two. Without a limit point the path is followed to mu_max (1.5).
 
 References
   Budiansky, B. (1959) Buckling of clamped shallow spherical shells. Proc. IUTAM Symp. on the

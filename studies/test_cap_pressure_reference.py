@@ -11,8 +11,12 @@
 3. The n = 0 singularity of Q_0 and dmu/ds = 0 (two separate monitors) give the same point.
 4. Shallow caps (lambda = 2, 3): no limit point and no bifurcation while p/p_cl < 1.5.
 5. Literature facts (Budiansky 1959, Huang 1964): the limit point comes first for moderate
-   lambda, a bifurcation with n >= 2 beyond lambda of about 5.5 to 6, n growing with lambda.
-Run: /usr/bin/python3 studies/test_cap_pressure_reference.py (about 30 s).
+   lambda, a bifurcation with n >= 2 beyond lambda of about 5.5 to 6, n growing with lambda
+   (only n <= 10 is watched here, to keep the run short; n = 5 is first at lambda = 10).
+6. The reduction of the 2-D energy (1)-(4) to the harmonic form (7): Q_n against the second
+   derivative of (4), evaluated on a (rho, theta) grid, along a random harmonic perturbation of
+   a loaded nonlinear state (n = 0, 1, 2, 4).
+Run: /usr/bin/python3 studies/test_cap_pressure_reference.py (about 35 s).
 """
 import math
 import os
