@@ -12,7 +12,7 @@ from study_support import poly_coefficients, poly_value
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from result_columns import DEPTH_MM, FORCE_N, K11_PER_MM, K12_PER_MM, K22_PER_MM  # noqa: E402
+from result_columns import DEPTH_MM, FORCE_N, K11_PER_MM, K12_PER_MM, K22_PER_MM, STABLE  # noqa: E402
 
 DPI = 100
 # The three lay-ups of the paper's Figs 7, 10 and 11 (angle ply, cross ply, "symmetric" ply).
@@ -44,9 +44,15 @@ def force_depth(cases, directory):
         if isinstance(c.get("C1"), float):
             ax.plot(h, [c["C1"] * x ** c["C2"] / 1000 for x in h], "--", color=line.get_color(),
                     lw=0.8)
+        unstable = [r for r in c["rows"] if r.get(STABLE) == 0]
+        if unstable:  # issue 15 item 5: unstable points marked apart from the stable path
+            ax.plot([r[DEPTH_MM] for r in unstable], [r[FORCE_N] / 1000 for r in unstable], "x",
+                    color="red", ms=5)
+    stability = any(c.get("stability") for c in cases)
     ax.set_xlabel("depth h (mm)")
     ax.set_ylabel("contact force T_N (kN)")
-    ax.set_title("T_N(h) per lay-up (solid), fitted C1 h^C2 (dashed)")
+    ax.set_title("T_N(h) per lay-up (solid), fitted C1 h^C2 (dashed)" +
+                 ("; unstable points: red x" if stability else ""))
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7, ncol=2)
     return save(fig, directory, "paper_fig07_force_depth.png")

@@ -38,7 +38,7 @@ import paper_report
 from study_support import (C2_PHYSICAL_RANGE, SOURCE_DIR, STUDIES_DIR, StudyError, case_dirs,
                            column, default_exe, fit_cli, interpolate, load_path,
                            measured_wall_time, run_sweep, theta_of, write_csv)
-from result_columns import DEPTH_MM, ENERGY_NMM, FORCE_N, WORK_NMM
+from result_columns import DEPTH_MM, ENERGY_NMM, FORCE_N, LOWEST_EIGENVALUE, STABLE, WORK_NMM
 
 # Variant name -> (study file in studies/, what it changes with respect to the default).
 VARIANTS = {
@@ -113,6 +113,25 @@ def grid_fit(exe, case_dir, depth_max):
     return out
 
 
+def stability_summary(rows, events):
+    """Issue 15 item 5: the stability of each point of the path (path.stability: true) - how
+    many points are unstable, the smallest lowest eigenvalue of the restricted tangent, and the
+    first located stability change (depth, force, limit point or bifurcation); `stability` None
+    for a run without it."""
+    flags = [r[STABLE] for r in rows if isinstance(r.get(STABLE), (int, float))]
+    if not flags:
+        return {"stability": None}
+    eigenvalues = [r[LOWEST_EIGENVALUE] for r in rows
+                   if isinstance(r.get(LOWEST_EIGENVALUE), (int, float))]
+    change = next((e for e in events if e.get("type") == "stability_change"), None)
+    return {"stability": True, "stability_points": len(flags),
+            "unstable_points": sum(1 for f in flags if f == 0),
+            "lowest_eigenvalue_min": min(eigenvalues) if eigenvalues else None,
+            "stability_change": None if change is None else {
+                "depth_mm": change.get("depth_mm"), "force_N": change.get("force_N"),
+                "criticality": change.get("criticality")}}
+
+
 def case_results(exe, run, depth_max):
     """One dict per case of a sweep: lay-up, status, the power-law fit on the 0.1 mm grid (and
     the sweep's fit on the path points, *_points), forces at the report depths, energy and work
@@ -142,6 +161,7 @@ def case_results(exe, run, depth_max):
             "work_J": work / 1000 if work is not None else None,
             **{k: c.get(k) for k in ("critical_k11_depth_mm", "critical_k11_force_N",
                                      "critical_k22_depth_mm", "critical_k22_force_N")},
+            **stability_summary(rows, events),
             "rows": rows, "events": events})
     return cases
 

@@ -58,6 +58,27 @@ class Checks(unittest.TestCase):
         self.assertTrue(paper_layups.checks(runs, results, {}))
 
 
+class Stability(unittest.TestCase):
+    """Issue 15 item 5: the paper study's stability summary of a path."""
+
+    def test_a_run_without_stability_has_none(self):
+        self.assertIsNone(paper_layups.stability_summary([{"depth_mm": 0.1}], [])["stability"])
+
+    def test_unstable_points_and_the_first_change_are_counted(self):
+        rows = [{"stable": 1, "lowest_eigenvalue": 3.0}, {"stable": 0, "lowest_eigenvalue": -1.0},
+                {"stable": 1, "lowest_eigenvalue": 2.0}]
+        events = [{"type": "signature_change", "depth_mm": 0.1},
+                  {"type": "stability_change", "depth_mm": 0.5, "force_N": 10.0,
+                   "criticality": "bifurcation"},
+                  {"type": "stability_change", "depth_mm": 0.9, "force_N": 20.0,
+                   "criticality": "limit_point"}]
+        s = paper_layups.stability_summary(rows, events)
+        self.assertEqual((s["stability_points"], s["unstable_points"]), (3, 1))
+        self.assertEqual(s["lowest_eigenvalue_min"], -1.0)
+        self.assertEqual(s["stability_change"],
+                         {"depth_mm": 0.5, "force_N": 10.0, "criticality": "bifurcation"})
+
+
 class Reports(unittest.TestCase):
     """Item 19: reports go to the output directory unless asked; they cite only repository
     paths."""
