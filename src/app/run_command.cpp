@@ -259,8 +259,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
       << setup.model.mesh.num_elements() << " " << setup.model.element->name() << " elements, "
       << setup.problem->num_shell_unknowns() << " shell unknowns, "
       << setup.problem->candidates().size() << " contact candidates; the indenter touches after "
-      << setup.problem->first_touch()
-      << " mm of travel from indenter.position, where depth 0 is\n";
+      << setup.problem->first_touch() << " mm of travel from indenter.position, where depth 0 is\n";
   if (setup.imperfection) err << imperfection_summary(*setup.imperfection) << "\n";
   if (cf.path.stability && setup.model.symmetry_factor > 1)
     err << "note: path.stability on a symmetric part of the shell sees only the modes symmetric "
