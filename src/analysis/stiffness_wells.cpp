@@ -82,7 +82,8 @@ std::optional<StiffnessVertex> fitted_vertex(const std::vector<StiffnessSample>&
   const Eigen::Matrix3d covariance = ldlt.solve(Eigen::Matrix3d::Identity()) * (rss / (n - 3));
   const double sign = well.kind == CriticalKind::kStiffnessMin ? 1.0 : -1.0;
   const double c2_error = std::sqrt(std::max(covariance(2, 2), 0.0));
-  if (!(sign * c(2) > kCurvatureSignificance * c2_error) || !(sign * c(2) > 0)) return std::nullopt;
+  // The well's sign, standing out of the scatter (strictly: an exact flat well has none).
+  if (!(sign * c(2) > kCurvatureSignificance * c2_error)) return std::nullopt;
   const double x = -c(1) / (2 * c(2));
   if (x < -1 || x > 1) return std::nullopt;
   // The vertex's variance by the delta method: gradient of -c1 / (2 c2) in (c0, c1, c2).
