@@ -139,10 +139,7 @@ def stiffness_agreement(rows):
     """The largest relative difference of the stiffness minimum's depth from the finest run
     reporting one, over the runs reporting one (meshes <= AGREEMENT_MESH)."""
     runs = stiffness_runs(rows)
-    if not runs:
-        return None
-    ref = min(runs, key=lambda r: (r["size_apex_mm"], r["step_max_mm"]))["stiffness_min_depth_mm"]
-    return max(abs(r["stiffness_min_depth_mm"] - ref) / ref for r in runs)
+    return agreement(runs, "stiffness_min_depth_mm") if runs else None
 
 
 def fmt(v, pattern):

@@ -171,8 +171,7 @@ std::vector<CriticalPoint> local_inflections(const std::vector<PathPoint>& point
     c.accuracy = e.accuracy;
     // The force and the stiffness on the segment of points holding the depth (the slopes
     // linearly, or the segment's secant where the points carry none).
-    int k = e.step;
-    while (k > 1 && points[k - 1].state.depth > e.p) --k;
+    const int k = segment_holding(points, e.p);
     const PathPoint &a = points[k - 1], &b = points[k];
     const double t = (e.p - a.state.depth) / (b.state.depth - a.state.depth);
     const bool slopes = has_slopes(a, b, force_slope);
