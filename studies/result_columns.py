@@ -31,6 +31,7 @@ K22_CONTACT_MIN_PER_MM = "k22_contact_min_per_mm"
 K22_CONTACT_MAX_PER_MM = "k22_contact_max_per_mm"
 ERROR_ESTIMATE = "error_estimate"
 FRAME_FORCE_N = "frame_force_N"
+FORCE_ERROR_ESTIMATE = "force_error_estimate"
 MAX_STRESS_INDEX = "max_stress_index"
 TSAI_WU_INDEX = "tsai_wu_index"
 HASHIN_INDEX = "hashin_index"
@@ -68,6 +69,7 @@ PATH_COLUMNS = (
     K22_CONTACT_MAX_PER_MM,
     ERROR_ESTIMATE,
     FRAME_FORCE_N,
+    FORCE_ERROR_ESTIMATE,
     MAX_STRESS_INDEX,
     TSAI_WU_INDEX,
     HASHIN_INDEX,
@@ -105,6 +107,7 @@ UNITS = {
     K22_CONTACT_MAX_PER_MM: "1/mm",
     ERROR_ESTIMATE: "-",
     FRAME_FORCE_N: "N",
+    FORCE_ERROR_ESTIMATE: "-",
     MAX_STRESS_INDEX: "-",
     TSAI_WU_INDEX: "-",
     HASHIN_INDEX: "-",

@@ -9,6 +9,7 @@
 
 #include <optional>
 
+#include "analysis/companion_mesh.hpp"
 #include "analysis/indentation_run.hpp"
 #include "analysis/path_columns.hpp"
 #include "bindings.hpp"
@@ -20,10 +21,11 @@ namespace si::py {
 namespace {
 
 // The columns a run of this case writes (path.csv's): those of every run, the failure indices
-// it monitors and the stability columns if it asks for them (analysis/path_columns.hpp).
+// it monitors, the stability columns and the force's error estimate if it asks for them
+// (analysis/path_columns.hpp).
 std::vector<PathColumn> case_columns(const IndentationCase& spec) {
   return run_columns(spec.damage ? spec.damage->criteria : std::vector<Criterion>{},
-                     spec.path.stability);
+                     spec.path.stability, spec.mesh.error_estimate == ErrorEstimate::kCompanion);
 }
 
 // A point's values by column name, for the progress function.
@@ -94,6 +96,16 @@ py::tuple run_case(const CaseHandle& c, const py::object& progress, int threads,
                                 {"vtu", nlohmann::json::array()}};
     control.save_record = [&] { return record; };
     r = run_indentation_path(*setup, on_point, control);
+    // mesh.error_estimate: companion, as the CLI: the companion's points are not the progress
+    // function's (another mesh), only Ctrl-C stops it.
+    if (!pending && setup->spec.mesh.error_estimate == ErrorEstimate::kCompanion &&
+        !r.points.empty())
+      run_companion(setup->spec, r, threads, {}, [&](const PathPoint&, const cont::Vector&) {
+        py::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() == 0) return true;
+        pending.emplace();
+        return false;
+      });
   }
   py::dict raw;
   raw["path"] = path_arrays(r);

@@ -72,6 +72,29 @@ class PaperCapEqualsCli(unittest.TestCase):
             self.assertLessEqual(e["depth_mm"], 10.0)
 
 
+class CompanionMesh(unittest.TestCase):
+    """mesh.error_estimate: companion through the module: the same force_error_estimate column
+    as the CLI's path.csv (the companion's path is the same computation)."""
+
+    def test_force_error_as_the_cli(self):
+        case = dict(QUICK_CAP)
+        case["mesh"] = dict(QUICK_CAP["mesh"], error_estimate="companion")
+        case["path"] = dict(QUICK_CAP["path"], depth_max="0.6 mm")
+        r = si.run(case, threads=1)
+        self.assertTrue(r.completed, r.reason)
+        estimate = r["force_error_estimate"]
+        self.assertTrue(np.isnan(estimate[0]))  # depth 0: no force
+        self.assertTrue(np.all(estimate[1:] > 0), estimate)
+        case_file = os.path.join(out_dir("companion_cli"), "case.yaml")
+        with open(case_file, "w") as f:
+            f.write(si.case_yaml(case))
+        code, _, err = run_cli("run", case_file, "--out", out_dir("companion_cli"),
+                               "--threads", "1")
+        self.assertEqual(code, 0, err)
+        values, _ = read_csv_columns(os.path.join(out_dir("companion_cli"), "path.csv"))
+        np.testing.assert_allclose(estimate[1:], values["force_error_estimate"][1:], rtol=1e-9)
+
+
 class Progress(unittest.TestCase):
     def test_progress_sees_every_point_in_order(self):
         seen = []

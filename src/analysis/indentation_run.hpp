@@ -74,6 +74,9 @@ struct PathPoint {
   // bifurcation (path.branch_switch).
   int branch = 0;
   bool stable = false;
+  // mesh.error_estimate: companion - the force's estimated relative discretisation error
+  // (companion_mesh.hpp); NaN where the companion has no point at this depth.
+  double force_error = std::nan("");
   double lowest_eigenvalue = std::nan("");
 };
 
@@ -108,6 +111,9 @@ struct PathResult {
   cont::Vector final_unknowns;
   // path.stability: every point has its stability, and the results carry its columns.
   bool stability = false;
+  // mesh.error_estimate: companion: every point has its force_error (companion_mesh.hpp), and
+  // the results carry its column.
+  bool companion_mesh = false;
   // The named critical points (critical_points.hpp; PathControl::critical_points).
   CriticalPoints critical;
 };

@@ -162,6 +162,19 @@ std::vector<ColumnSpec> make_columns() {
                "a fixture",
                [](const S& s) { return s.frame_force; }, nullptr,
                [](PathPoint& p, double v) { p.state.frame_force = v; }});
+  ColumnSpec force_error{
+      PathColumn::kForceError,
+      "force_error_estimate",
+      "-",
+      "estimated relative discretisation error of force_N, from a companion run on the mesh "
+      "with twice the element sizes at the same depths: abs(F - F_2h) / (3 F), the Richardson "
+      "estimate of an error of order 2 (written with `mesh.error_estimate: companion`; "
+      "docs/theory/discretisation-error.md says where it holds)",
+      nullptr,
+      [](const PathPoint& p) { return p.force_error; },
+      [](PathPoint& p, double v) { p.force_error = v; }};
+  force_error.group = ColumnGroup::kCompanionMesh;
+  c.push_back(force_error);
   // The failure indices (analysis/damage_probe.hpp): the largest over the monitored nodes.
   // path_grid.csv interpolates them linearly: a largest value over nodes and plies has a kink
   // wherever its place changes, where a slope is no better than the chord, and each point's
@@ -195,7 +208,7 @@ std::vector<ColumnSpec> make_columns() {
                     [](const PathPoint& p) { return p.stable ? 1.0 : 0.0; },
                     [](PathPoint& p, double v) { p.stable = v != 0; }};
   stable.grid = G::kMinimum;
-  stable.stability = true;
+  stable.group = ColumnGroup::kStability;
   ColumnSpec lowest{PathColumn::kLowestEigenvalue,
                     "lowest_eigenvalue",
                     "N/mm",
@@ -206,7 +219,7 @@ std::vector<ColumnSpec> make_columns() {
                     nullptr,
                     [](const PathPoint& p) { return p.lowest_eigenvalue; },
                     [](PathPoint& p, double v) { p.lowest_eigenvalue = v; }};
-  lowest.stability = true;
+  lowest.group = ColumnGroup::kStability;
   ColumnSpec branch{PathColumn::kBranch,
                     "branch",
                     "-",
@@ -217,7 +230,7 @@ std::vector<ColumnSpec> make_columns() {
                     [](const PathPoint& p) { return static_cast<double>(p.branch); },
                     [](PathPoint& p, double v) { p.branch = static_cast<int>(v); }};
   branch.grid = G::kMinimum;
-  branch.stability = true;
+  branch.group = ColumnGroup::kStability;
   c.push_back(stable);
   c.push_back(lowest);
   c.push_back(branch);
@@ -245,10 +258,13 @@ double column_value(const ColumnSpec& c, const PathPoint& p) {
   return c.of_state ? c.of_state(p.state) : c.of_point(p);
 }
 
-std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored, bool stability) {
+std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored, bool stability,
+                                    bool companion) {
   std::vector<PathColumn> out;
   for (const ColumnSpec& c : path_columns()) {
-    if (c.stability && !stability) continue;
+    if ((c.group == ColumnGroup::kStability && !stability) ||
+        (c.group == ColumnGroup::kCompanionMesh && !companion))
+      continue;
     if (!c.criterion ||
         std::find(monitored.begin(), monitored.end(), *c.criterion) != monitored.end())
       out.push_back(c.id);
@@ -257,7 +273,7 @@ std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored, boo
 }
 
 std::vector<PathColumn> result_columns(const PathResult& r) {
-  return run_columns(r.criteria, r.stability);
+  return run_columns(r.criteria, r.stability, r.companion_mesh);
 }
 
 const std::vector<PathColumn>& base_columns() {

@@ -45,6 +45,9 @@ enum class PathColumn {
   kK22ContactMax,
   kErrorEstimate,
   kFrameForce,
+  // The force's estimated discretisation error, only in runs with mesh.error_estimate:
+  // companion (analysis/companion_mesh.hpp).
+  kForceError,
   // The failure indices (damage/failure_index.hpp), only in runs whose case monitors the
   // criterion (docs/case-file.md `damage.criteria`).
   kMaxStressIndex,
@@ -68,6 +71,9 @@ enum class GridInterpolation {
   kMinimum  // the smaller end (a flag: 1 inside only if 1 at both ends)
 };
 
+// The runs that write a column (ColumnSpec::group).
+enum class ColumnGroup { kEveryRun, kStability, kCompanionMesh };
+
 struct ColumnSpec {
   PathColumn id;
   const char* name;         // "force_N": the column's name in every file
@@ -81,9 +87,10 @@ struct ColumnSpec {
   GridInterpolation grid = GridInterpolation::kLinear;
   // A failure index: present only in the runs that monitor this criterion.
   std::optional<Criterion> criterion = std::nullopt;
-  // Written only by runs that compute the points' stability (path.stability: true), so that a
-  // run without it writes exactly what it wrote before the columns existed.
-  bool stability = false;
+  // Which runs write the column: every run, or only those that compute it (path.stability:
+  // true; mesh.error_estimate: companion), so that a run without them writes exactly what it
+  // wrote before the columns existed.
+  ColumnGroup group = ColumnGroup::kEveryRun;
 };
 
 // All columns, in path.csv's order (the order of PathColumn).
@@ -93,11 +100,13 @@ const char* column_name(PathColumn id);
 double column_value(const ColumnSpec& c, const PathPoint& p);
 
 // The columns of a run, in table order: those of every run, the failure index of each
-// criterion it monitors, and with `stability` (path.stability) the stability columns.
+// criterion it monitors, with `stability` (path.stability) the stability columns and with
+// `companion` (mesh.error_estimate: companion) the force's error estimate.
 // base_columns(): a run without damage (run_columns({})).
-std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored,
-                                    bool stability = false);
-// The columns of a result: its monitored criteria's, and the stability columns if it has them.
+std::vector<PathColumn> run_columns(const std::vector<Criterion>& monitored, bool stability = false,
+                                    bool companion = false);
+// The columns of a result: its monitored criteria's, and the stability and companion columns if
+// it has them.
 std::vector<PathColumn> result_columns(const PathResult& r);
 const std::vector<PathColumn>& base_columns();
 // The column of a criterion's failure index.

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <optional>
 #include <sstream>
 
+#include "analysis/companion_mesh.hpp"
 #include "analysis/indentation_run.hpp"
 #include "analysis/mode_field.hpp"
 #include "app/interrupt_signals.hpp"
@@ -201,27 +203,71 @@ void print_damage_summary(const PathResult& r, std::ostream& out) {
   }
 }
 
+std::string percent(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g %%", 100 * v);
+  return text;
+}
+
 // The run's discretisation error in words (docs/theory/discretisation-error.md): the largest
-// estimate over the path and the last one; a warning on `err` above mesh.tolerance.
+// estimate over the path and the last one, of the energy norm and, with a companion run, of the
+// force; a warning on `err` when the force's (else the energy norm's) exceeds mesh.tolerance.
 void print_error_summary(const PathResult& r, double tolerance, std::ostream& out,
                          std::ostream& err) {
   const PathPoint* worst = nullptr;
   for (const PathPoint& p : r.points)
     if (!worst || p.state.error_estimate > worst->state.error_estimate) worst = &p;
   if (!worst || !(worst->state.error_estimate > 0)) return;
-  const auto percent = [](double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2g %%", 100 * v);
-    return std::string(text);
-  };
-  const std::string at = format_quantity(worst->state.depth, Dimension::kLength);
   out << "discretisation error (Zienkiewicz-Zhu, energy norm): max "
-      << percent(worst->state.error_estimate) << " at depth " << at << ", "
+      << percent(worst->state.error_estimate) << " at depth "
+      << format_quantity(worst->state.depth, Dimension::kLength) << ", "
       << percent(r.points.back().state.error_estimate) << " at the last point\n";
-  if (tolerance > 0 && worst->state.error_estimate > tolerance)
+  double estimate = worst->state.error_estimate;
+  if (const PathPoint* force = largest_force_error(r)) {
+    worst = force;
+    estimate = force->force_error;
+    out << "force discretisation error (companion run, element sizes x2): max " << percent(estimate)
+        << " at depth " << format_quantity(force->state.depth, Dimension::kLength) << "\n";
+  }
+  if (tolerance > 0 && estimate > tolerance)
     err << "shellindent: warning: mesh.tolerance = " << percent(tolerance)
-        << " exceeded (estimated " << percent(worst->state.error_estimate) << " at depth " << at
-        << "): refine mesh.size_apex\n";
+        << " exceeded (estimated " << percent(estimate) << " at depth "
+        << format_quantity(worst->state.depth, Dimension::kLength) << "): refine mesh.size_apex\n";
+}
+
+// mesh.error_estimate: companion - the case again on the mesh with twice the element sizes, at
+// the run's depths, for every point's force_error (analysis/companion_mesh.hpp), with its own
+// progress lines; what it could not do is said, and the run's own results stand.
+void add_force_errors(const CaseFile& cf, int threads, PathResult& r, std::ostream& err) {
+  if (cf.mesh.error_estimate != ErrorEstimate::kCompanion || interrupted()) return;
+  double depth_max = 0;
+  for (const PathPoint& p : r.points)
+    if (p.branch == 0) depth_max = std::max(depth_max, p.state.depth);
+  if (!(depth_max > 0)) return;
+  std::optional<Progress> progress;
+  const CompanionRun c = run_companion(
+      cf, r, threads,
+      [&](const CompanionRun& built) {
+        err << "companion run for the force's discretisation error (element sizes x2): "
+            << built.shell_unknowns << " shell unknowns\n";
+        progress.emplace(err, depth_max);
+      },
+      [&](const PathPoint& p, const cont::Vector&) {
+        progress->show(p);
+        return !interrupted();
+      });
+  if (progress) progress->done();
+  if (!c.why_not.empty())
+    err << "shellindent: warning: no force error estimate: the companion mesh (element sizes x2) "
+           "cannot be built: "
+        << c.why_not << "\n";
+  else if (!c.path.completed)
+    err << "shellindent: warning: the companion run stopped"
+        << (c.path.points.empty() ? std::string()
+                                  : " at depth " + format_quantity(c.path.points.back().state.depth,
+                                                                   Dimension::kLength))
+        << " (" << (interrupted() ? "interrupted" : c.path.reason)
+        << "): the points beyond it have no force_error_estimate\n";
 }
 
 }  // namespace
@@ -294,6 +340,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   if (r.status == RunStatus::kStopped && interrupted())
     r.reason = std::string("interrupted (") + interrupt_name() + ")";
   const int event_files = vtus.after_run(setup, r);
+  add_force_errors(cf, o.threads, r, err);
 
   const bool local = setup.problem->local_law().kind != LocalLawKind::kNone;
   out << "Indentation of " << cf.file << " (" << run_method_name(r.method)

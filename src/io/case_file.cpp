@@ -36,6 +36,8 @@ const Choices<ElementType> kElements{{"mitc4", ElementType::kMitc4},
                                      {"bernstein4", ElementType::kBernstein4}};
 const Choices<Symmetry> kSymmetries{{"full", Symmetry::kFull}, {"quarter", Symmetry::kQuarter}};
 const Choices<bool> kGradings{{"uniform", false}, {"graded", true}};
+const Choices<ErrorEstimate> kErrorEstimates{{"recovery", ErrorEstimate::kRecovery},
+                                             {"companion", ErrorEstimate::kCompanion}};
 const Choices<IndenterShape> kShapes{{"sphere", IndenterShape::kSphere},
                                      {"superquadric", IndenterShape::kSuperquadric},
                                      {"flat_punch", IndenterShape::kFlatPunch},
@@ -107,6 +109,11 @@ bool has_mesh_file(const MapReader& top) {
 // mesh.file, resolved against the directory of the case file, must exist now (nothing is run or
 // written for a case whose mesh cannot be read).
 void read_mesh_file(const MapReader& map, MeshSpec& mesh) {
+  if (map.has("error_estimate"))
+    throw_input(
+        "an imported mesh (mesh.file) has no element sizes to double for a companion run: "
+        "`error_estimate` needs a built-in mesh (its Zienkiewicz-Zhu estimate is always on)",
+        map.where("error_estimate"));
   map.allow_only({"element", "file", "reorient", "flip", "symmetry", "tolerance"});
   const std::filesystem::path file = map.scalar("file");
   const std::filesystem::path base = std::filesystem::path(map.where().file).parent_path();
@@ -127,8 +134,8 @@ MeshSpec read_mesh(const MapReader& top, ShellType shell, bool graded) {
   if (map->has("file")) {
     read_mesh_file(*map, mesh);
   } else {
-    map->allow_only(
-        {"element", "size_apex", "size_edge", "refine_radius", "symmetry", "grading", "tolerance"});
+    map->allow_only({"element", "size_apex", "size_edge", "refine_radius", "symmetry", "grading",
+                     "tolerance", "error_estimate"});
     mesh.graded = map->choice_or("grading", kGradings, mesh.graded);
     const bool grid =
         shell == ShellType::kRectangularPlate || shell == ShellType::kCylindricalPanel;
@@ -144,6 +151,8 @@ MeshSpec read_mesh(const MapReader& top, ShellType shell, bool graded) {
   mesh.refine_radius = map->positive_or("refine_radius", Dimension::kLength, mesh.refine_radius);
   mesh.symmetry = map->choice_or("symmetry", kSymmetries, mesh.symmetry);
   mesh.tolerance = fraction_or(*map, "tolerance", 0.0);
+  // An imported mesh has no sizes to double (`file` allows no error_estimate key).
+  mesh.error_estimate = map->choice_or("error_estimate", kErrorEstimates, mesh.error_estimate);
   return mesh;
 }
 

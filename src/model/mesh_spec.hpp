@@ -8,15 +8,23 @@
 
 namespace si {
 
+// How a run states its discretisation error (docs/theory/discretisation-error.md): the
+// Zienkiewicz-Zhu estimate of every point's energy-norm error (always), and with kCompanion also
+// the force's, from a second run on the mesh with twice the element sizes
+// (analysis/companion_mesh.hpp).
+enum class ErrorEstimate { kRecovery, kCompanion };
+
 // Mesh size grades from size_apex at the indentation point to size_edge beyond refine_radius.
 struct MeshSpec {
   ElementType element = ElementType::kMitc4;
   double size_apex = 0.5;       // mm
   double size_edge = 2.0;       // mm
   double refine_radius = 13.0;  // mm, measured from the indentation point in plan
-  // The largest estimated discretisation error (relative, energy norm: IndentationState::
-  // error_estimate) the user accepts; a run above it warns. 0: no tolerance.
+  // The largest estimated discretisation error the user accepts (relative: the force's with
+  // kCompanion, else the energy norm's, IndentationState::error_estimate); a run above it warns.
+  // 0: no tolerance.
   double tolerance = 0;
+  ErrorEstimate error_estimate = ErrorEstimate::kRecovery;
   Symmetry symmetry = Symmetry::kFull;
   // Rectangular plates and cylindrical panels: graded like the cap (size_apex within
   // refine_radius, growing to size_edge) instead of uniform at size_apex.

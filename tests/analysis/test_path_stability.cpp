@@ -61,7 +61,7 @@ TEST(PathStability, OffByDefault_NothingComputedNoColumns) {
   }
   EXPECT_EQ(result_columns(r), base_columns());
   for (PathColumn col : result_columns(r))
-    EXPECT_FALSE(path_column(col).stability) << column_name(col);
+    EXPECT_EQ(path_column(col).group, ColumnGroup::kEveryRun) << column_name(col);
 }
 
 // The analysis evaluates the gaps again, whose Newton guesses steer the next solve at round-off

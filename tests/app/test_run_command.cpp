@@ -91,6 +91,66 @@ TEST(RunCommand, StatesTheDiscretisationErrorAndWarnsAboveTheTolerance) {
   EXPECT_TRUE(contains(csv.substr(0, csv.find('\n')), "error_estimate"));
 }
 
+// mesh.error_estimate: companion - a second run on the mesh with twice the element sizes at the
+// run's own depths gives every point its force_error_estimate (the Richardson arithmetic is
+// checked in tests/analysis/test_companion_mesh.cpp), one stdout line, and the tolerance is then
+// the force's; without it the column is not written at all.
+TEST(RunCommand, CompanionRunStatesTheForceError) {
+  std::string text = cap_case("nonlinear", "{shape: sphere, radius: 12.7 mm}",
+                              "{method: pseudo_arclength, depth_max: 0.6 mm, step: 0.2 mm}");
+  text.replace(text.find("symmetry: quarter}"), 18,
+               "symmetry: quarter, error_estimate: companion, tolerance: 0.01 %}");
+  const fs::path dir = fresh_dir("error_companion");
+  const auto r = run_cli("run '" + write_case(dir, text).string() + "' --out '" +
+                         (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output,
+                       "companion run for the force's discretisation error (element "
+                       "sizes x2): "))
+      << r.output;
+  EXPECT_TRUE(
+      contains(r.output, "force discretisation error (companion run, element sizes x2): max "))
+      << r.output;
+  EXPECT_TRUE(contains(r.output, "warning: mesh.tolerance = 0.01 % exceeded")) << r.output;
+  const auto json = nlohmann::json::parse(testing::read_file(dir / "out" / "path.json"));
+  ASSERT_GE(json["points"].size(), 3u);
+  for (std::size_t i = 1; i < json["points"].size(); ++i) {  // the first point is at depth 0
+    const auto& e = json["points"][i]["force_error_estimate"];
+    ASSERT_TRUE(e.is_number()) << i;
+    EXPECT_GT(e.get<double>(), 0.0) << i;
+    EXPECT_LT(e.get<double>(), 0.5) << i;
+  }
+  const std::string csv = testing::read_file(dir / "out" / "path.csv");
+  EXPECT_TRUE(contains(csv.substr(0, csv.find('\n')), "force_error_estimate"));
+  const fs::path plain = fresh_dir("error_plain");
+  const auto p = run_cli("run '" +
+                         write_case(plain, cap_case("linear", "{shape: sphere, radius: 12.7 mm}",
+                                                    "{depth_max: 0.5 mm, step: 0.25 mm}"))
+                             .string() +
+                         "' --out '" + (plain / "out").string() + "'");
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  EXPECT_FALSE(contains(testing::read_file(plain / "out" / "path.csv"), "force_error"));
+}
+
+// An imported mesh has no sizes to double: the key is refused with the reason.
+TEST(RunCommand, CompanionWithAnImportedMeshIsRefused) {
+  const fs::path dir = fresh_dir("error_companion_file");
+  std::ofstream(dir / "plate.msh") << "not read";
+  const std::string text =
+      "material: paper-carbon-epoxy\n"
+      "laminate: {layup: \"[0/0]2S\", ply_thickness: 0.475 mm}\n"
+      "shell: {edge: clamped}\n"
+      "mesh: {file: plate.msh, error_estimate: companion}\n"
+      "kinematics: linear\nindenter: {shape: sphere, radius: 12.7 mm}\n"
+      "path: {depth_max: 1 mm, step: 0.5 mm}\n";
+  const auto r = run_cli("run '" + write_case(dir, text).string() + "' --out '" +
+                         (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "mesh.error_estimate")) << r.output;
+  EXPECT_TRUE(contains(r.output, "no element sizes to double")) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 TEST(RunCommand, IndenterBesideTheShellIsRefused) {
   const fs::path dir = fresh_dir("run_miss");
   const fs::path c = write_case(

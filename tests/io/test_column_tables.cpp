@@ -90,11 +90,12 @@ TEST(PathColumns, NamesAreUniqueAndEveryColumnIsComputedAndRestored) {
 
 // A run has the columns of every run, plus the failure index of each criterion it monitors (in
 // table order, whatever the case's order), plus the stability columns (stable, lowest eigenvalue,
-// branch) with path.stability; a run without either has exactly the others.
+// branch) with path.stability, plus the force's error estimate with mesh.error_estimate:
+// companion; a run without any of them has exactly the others.
 TEST(PathColumns, OptionalColumnsOnlyInRunsThatAskForThem) {
   const std::vector<PathColumn>& base = base_columns();
   EXPECT_EQ(base.back(), PathColumn::kFrameForce);
-  EXPECT_EQ(base.size() + 7, path_columns().size());
+  EXPECT_EQ(base.size() + 8, path_columns().size());
   const std::vector<PathColumn> run =
       run_columns({Criterion::kQuadraticDelamination, Criterion::kHashin});
   ASSERT_EQ(run.size(), base.size() + 2);
@@ -107,9 +108,13 @@ TEST(PathColumns, OptionalColumnsOnlyInRunsThatAskForThem) {
   EXPECT_EQ(stable[base.size() + 1], PathColumn::kStable);
   EXPECT_EQ(stable[base.size() + 2], PathColumn::kLowestEigenvalue);
   EXPECT_EQ(stable.back(), PathColumn::kBranch);
-  EXPECT_TRUE(path_column(PathColumn::kStable).stability);
-  EXPECT_TRUE(path_column(PathColumn::kBranch).stability);
+  EXPECT_EQ(path_column(PathColumn::kStable).group, ColumnGroup::kStability);
+  EXPECT_EQ(path_column(PathColumn::kBranch).group, ColumnGroup::kStability);
   EXPECT_EQ(path_monitors(stable).size(), path_monitors().size() + 1);  // not monitors
+  const std::vector<PathColumn> companion = run_columns({}, false, true);
+  ASSERT_EQ(companion.size(), base.size() + 1);
+  EXPECT_EQ(companion.back(), PathColumn::kForceError);                // after every run's columns
+  EXPECT_EQ(path_monitors(companion).size(), path_monitors().size());  // not a monitor
 }
 
 // The checkpoint's point values restore every column (distinct values, so a swap shows).
