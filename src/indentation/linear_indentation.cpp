@@ -18,42 +18,50 @@ LinearIndentation::LinearIndentation(const IndentationProblem& problem)
   solver_->analyze(K);
   solver_->factorize(K);
   C_ = problem.contact_matrix();
+  Ct_ = C_.transpose();
   g0_ = problem.reference_gaps();
-  const int nc = static_cast<int>(C_.rows());
-  S_.resize(nc, nc);
-  const SparseMatrix Ct = C_.transpose();
-  for (int j = 0; j < nc; ++j) {
-    const Eigen::VectorXd y = solver_->solve(Eigen::VectorXd(Ct.col(j)));
-    S_.col(j) = C_ * y;
-  }
-  S_ = 0.5 * (S_ + S_.transpose()).eval();  // exact symmetry for the dense Cholesky
   // Thin-layer local law (vam): each gap gains c_L++ lambda_i / A_i.
-  S_.diagonal() += problem.layer_compliances();
-  lambda_ = Eigen::VectorXd::Zero(nc);
+  layer_ = problem.layer_compliances();
+  columns_.resize(num_candidates());
+  lambda_ = Eigen::VectorXd::Zero(num_candidates());
 }
 
 LinearIndentation::~LinearIndentation() = default;
 
-namespace {
+const Eigen::VectorXd& LinearIndentation::column(int j) {
+  Eigen::VectorXd& c = columns_[j];
+  if (c.size() == 0) {
+    c = C_ * solver_->solve(Eigen::VectorXd(Ct_.col(j)));
+    c[j] += layer_[j];
+  }
+  return c;
+}
 
-// lambda on the set `free` (others zero) minimising the QP there: S_FF lambda_F = -q_F.
-Eigen::VectorXd minimiser_on(const Eigen::MatrixXd& S, const Eigen::VectorXd& q,
-                             const std::vector<int>& free) {
+Eigen::VectorXd LinearIndentation::times(const Eigen::VectorXd& lambda) {
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(num_candidates());
+  for (int j = 0; j < num_candidates(); ++j)
+    if (lambda[j] != 0) y += lambda[j] * column(j);
+  return y;
+}
+
+Eigen::VectorXd LinearIndentation::minimiser_on(const Eigen::VectorXd& q,
+                                                const std::vector<int>& free) {
   const int m = static_cast<int>(free.size());
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(q.size());
   if (m == 0) return lambda;
   Eigen::MatrixXd Sff(m, m);
   Eigen::VectorXd qf(m);
-  for (int a = 0; a < m; ++a) {
-    qf[a] = q[free[a]];
-    for (int b = 0; b < m; ++b) Sff(a, b) = S(free[a], free[b]);
+  for (int b = 0; b < m; ++b) {
+    qf[b] = q[free[b]];
+    const Eigen::VectorXd& c = column(free[b]);
+    for (int a = 0; a < m; ++a) Sff(a, b) = c[free[a]];
   }
+  // S is symmetric up to the solver's round-off; the dense Cholesky wants it exactly.
+  Sff = 0.5 * (Sff + Sff.transpose()).eval();
   const Eigen::VectorXd sol = Sff.llt().solve(-qf);
   for (int a = 0; a < m; ++a) lambda[free[a]] = sol[a];
   return lambda;
 }
-
-}  // namespace
 
 // The primal-dual active-set method (Hintermueller, Ito & Kunisch 2002) from the warm start:
 // usually two or three dense solves per depth, as all contact changes are taken at once. It
@@ -61,14 +69,14 @@ Eigen::VectorXd minimiser_on(const Eigen::MatrixXd& S, const Eigen::VectorXd& q,
 // terminates finitely, takes over from the same warm start.
 bool LinearIndentation::solve_pdas(const Eigen::VectorXd& q, double tol, Eigen::VectorXd& lambda) {
   const int nc = static_cast<int>(q.size());
-  Eigen::VectorXd w = q + S_ * lambda_;
+  Eigen::VectorXd w = q + times(lambda_);
   std::vector<int> set;
   for (int i = 0; i < nc; ++i)
     if (lambda_[i] > w[i]) set.push_back(i);
   for (int k = 0; k < 20; ++k) {
     ++iterations_;
-    lambda = minimiser_on(S_, q, set);
-    w = q + S_ * lambda;
+    lambda = minimiser_on(q, set);
+    w = q + times(lambda);
     std::vector<int> next;
     for (int i = 0; i < nc; ++i)
       if (lambda[i] > w[i]) next.push_back(i);
@@ -81,7 +89,7 @@ bool LinearIndentation::solve_pdas(const Eigen::VectorXd& q, double tol, Eigen::
 }
 
 cont::Vector LinearIndentation::solve(double h) {
-  const int nc = static_cast<int>(S_.rows());
+  const int nc = num_candidates();
   const Eigen::VectorXd q = g0_ - Eigen::VectorXd::Constant(nc, h);
   // Optimality tolerance on w: roundoff of S lambda, relative to the gap scale.
   const double tol = 1e-13 * std::max(1.0, q.cwiseAbs().maxCoeff());
@@ -108,7 +116,7 @@ void LinearIndentation::solve_primal(const Eigen::VectorXd& q, double tol,
   for (int k = 0;; ++k, ++iterations_) {
     if (k > max_iterations)
       throw_numerical("linear contact: the active-set method did not terminate");
-    const Eigen::VectorXd target = minimiser_on(S_, q, free);
+    const Eigen::VectorXd target = minimiser_on(q, free);
     // Blocked by a bound: step to the first multiplier reaching zero and drop it.
     double alpha = 1.0;
     int blocking = -1;
@@ -124,7 +132,7 @@ void LinearIndentation::solve_primal(const Eigen::VectorXd& q, double tol,
       continue;
     }
     // Optimal on this set: free the most violated gap, if any.
-    const Eigen::VectorXd w = q + S_ * lambda;
+    const Eigen::VectorXd w = q + times(lambda);
     int entering = -1;
     double most = -tol;
     for (int i = 0; i < nc; ++i)

@@ -7,8 +7,10 @@
 // It is solved by the primal-dual active-set method warm-started from the previous depth (all
 // contact changes at once, a few dense solves), with the primal active-set method (Nocedal &
 // Wright 2006, Alg. 16.3), which terminates finitely, as the fall-back; then x = K^-1 C^T lambda.
-// S costs one solve per candidate, once; each depth costs a few small dense Cholesky solves and
-// one sparse back-substitution.
+// S is never formed whole: its column j (one sparse solve) is computed the first time candidate j
+// enters a contact set and kept, so the cost and memory follow the contact zone, not the
+// candidates (a 1e6-unknown cap has 57,000 candidates: a dense S would take 26 GB and 57,000
+// solves). Each depth costs a few small dense Cholesky solves and one sparse back-substitution.
 #pragma once
 
 #include <memory>
@@ -28,12 +30,21 @@ class LinearIndentation {
   int last_iterations() const { return iterations_; }  // dense solves at the last depth
 
  private:
+  int num_candidates() const { return static_cast<int>(C_.rows()); }
+  // Column j of S, computed on first use.
+  const Eigen::VectorXd& column(int j);
+  // S lambda from the columns of lambda's nonzeros.
+  Eigen::VectorXd times(const Eigen::VectorXd& lambda);
+  // lambda on the set `free` (others zero) minimising the QP there: S_FF lambda_F = -q_F.
+  Eigen::VectorXd minimiser_on(const Eigen::VectorXd& q, const std::vector<int>& free);
   bool solve_pdas(const Eigen::VectorXd& q, double tol, Eigen::VectorXd& lambda);
   void solve_primal(const Eigen::VectorXd& q, double tol, Eigen::VectorXd& lambda);
   const IndentationProblem& problem_;
   std::unique_ptr<LinearSolver> solver_;
   SparseMatrix C_;
-  Eigen::MatrixXd S_;
+  SparseMatrix Ct_;
+  Eigen::VectorXd layer_;                 // the thin-layer law's diagonal of S (vam), mm/N
+  std::vector<Eigen::VectorXd> columns_;  // S's columns computed so far (empty: not yet)
   Eigen::VectorXd g0_;
   Eigen::VectorXd lambda_;  // warm start
   int iterations_ = 0;
