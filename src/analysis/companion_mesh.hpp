@@ -1,5 +1,5 @@
 // The force's discretisation error of a run, estimated from a companion run on a coarser mesh
-// (mesh.error_estimate: companion; docs/theory/discretisation-error.md 3): the same case with every
+// (mesh.error_estimate: companion; docs/theory/discretisation-error.md 4): the same case with every
 // element size doubled, landing on the run's own depths, and at each depth Richardson's estimate
 // of the run's error from the two forces,
 //     |F_h - F*| ~ |F_h - F_2h| / (2^p - 1),   p = 2,
