@@ -400,11 +400,14 @@ CriticalPoints find_critical_points(IndentationSetup& setup, const PathResult& r
     std::shared_ptr<OnsetWatch> own = watch ? nullptr : watch_onset(setup);
     OnsetWatch& w = watch ? *watch : *own;
     // The run's corrector at the trial depth, from the bracket start's state (in the layout of
-    // the candidates at the end of the run; where it fails, the points are used).
+    // the candidates at the end of the run; where it fails, the points are used). Not after a
+    // stop (Ctrl-C): each re-solve costs a step (about 100 s on a 1e6-unknown cap), and the user
+    // asked for the results now.
+    const bool stopped = r.status == RunStatus::kStopped;
     const ExactForce exact = [&](double from, double h, double& t) {
       IndentationProblem& p = *setup.problem;
       cont::Vector z;
-      if (!w.bracket(from, z)) return false;
+      if (stopped || !w.bracket(from, z)) return false;
       z = in_present_layout(z, p);
       if (z.size() == 0 || !cont::solve_at(p, z, h, path_newton_settings(setup)).converged)
         return false;

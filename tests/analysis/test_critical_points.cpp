@@ -306,5 +306,23 @@ TEST(CriticalPoints, PaperCapOnsetAgreesWithBisectionOfNaturalSolves) {
   EXPECT_TRUE(rl.critical.limit_points.empty());
 }
 
+// A run the user stopped (Ctrl-C) reports the onset from its points, without the re-solves that
+// locate it to 1e-9 mm (each costs a step: minutes on a 1e6-unknown cap); the full run's located
+// onset lies within the stopped run's stated accuracy.
+TEST(CriticalPoints, StoppedRunTakesTheOnsetFromItsPointsWithoutReSolves) {
+  IndentationSetup full_setup(small_cap("nonlinear", 3.0), 1);
+  const PathResult full = run_indentation_path(full_setup);
+  ASSERT_EQ(full.critical.onset_status, OnsetStatus::kFound);
+  IndentationSetup s(small_cap("nonlinear", 3.0), 1);
+  const PathResult r = run_indentation_path(
+      s, [&](const PathPoint& p, const cont::Vector&) { return p.state.depth < 2.0; });
+  ASSERT_EQ(r.status, RunStatus::kStopped);
+  ASSERT_EQ(r.critical.onset_status, OnsetStatus::kFound);
+  const CriticalPoint& onset = *r.critical.onset;
+  EXPECT_GT(onset.accuracy, 1e-6);  // the points' interpolation, not a re-solved bracket
+  EXPECT_LT(full.critical.onset->accuracy, 1e-6);
+  EXPECT_LE(std::abs(onset.depth - full.critical.onset->depth), onset.accuracy);
+}
+
 }  // namespace
 }  // namespace si
