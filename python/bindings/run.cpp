@@ -98,8 +98,7 @@ py::tuple run_case(const CaseHandle& c, const py::object& progress, int threads,
     r = run_indentation_path(*setup, on_point, control);
     // mesh.error_estimate: companion, as the CLI: the companion's points are not the progress
     // function's (another mesh), only Ctrl-C stops it.
-    if (!pending && setup->spec.mesh.error_estimate == ErrorEstimate::kCompanion &&
-        !r.points.empty())
+    if (!pending && setup->spec.mesh.error_estimate == ErrorEstimate::kCompanion)
       run_companion(setup->spec, r, threads, {}, [&](const PathPoint&, const cont::Vector&) {
         py::gil_scoped_acquire gil;
         if (PyErr_CheckSignals() == 0) return true;

@@ -55,14 +55,20 @@ CompanionRun run_companion(const IndentationCase& c, PathResult& r, int threads,
                            const std::function<void(const CompanionRun&)>& announce,
                            const PathCallback& on_point) {
   CompanionRun out;
+  if (std::none_of(r.points.begin(), r.points.end(),
+                   [](const PathPoint& p) { return p.branch == 0 && p.state.depth > 0; })) {
+    out.why_not = "the run has no point at a positive depth";
+    return out;
+  }
   std::optional<IndentationSetup> companion;
   try {
     companion.emplace(companion_case(c, r), threads);
   } catch (const Error& e) {
-    out.why_not = e.what();
+    out.why_not = std::string("its mesh cannot be built: ") + e.what();
     return out;
   }
   out.shell_unknowns = companion->problem->num_shell_unknowns();
+  out.depth_max = companion->spec.path.depth_max;
   if (announce) announce(out);
   PathControl control;
   control.critical_points = false;  // its force only

@@ -33,16 +33,18 @@ IndentationCase companion_case(const IndentationCase& c, const PathResult& r);
 // r.companion_mesh.
 void attach_force_errors(PathResult& r, const PathResult& companion);
 
-// What run_companion did: its path (empty when the companion could not be built: `why_not` says
-// why) and its size.
+// What run_companion did: its path (empty when there was none: `why_not` says why), its size and
+// the deepest depth it lands on.
 struct CompanionRun {
   PathResult path;
   int shell_unknowns = 0;
+  double depth_max = 0;  // mm
   std::string why_not;
 };
 
 // mesh.error_estimate: companion: builds companion_case(c, r), runs it (on_point as for any path:
-// false stops it) and attaches its errors to r. A companion that cannot be built or stops early
+// false stops it) and attaches its errors to r. A run without a point at a positive depth has no
+// companion (why_not). A companion that cannot be built or stops early
 // leaves the points it has no depth for without an estimate; r's own points are unchanged
 // otherwise. `announce` is called once the companion is built, before it runs.
 CompanionRun run_companion(const IndentationCase& c, PathResult& r, int threads,

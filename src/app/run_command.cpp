@@ -240,17 +240,13 @@ void print_error_summary(const PathResult& r, double tolerance, std::ostream& ou
 // progress lines; what it could not do is said, and the run's own results stand.
 void add_force_errors(const CaseFile& cf, int threads, PathResult& r, std::ostream& err) {
   if (cf.mesh.error_estimate != ErrorEstimate::kCompanion || interrupted()) return;
-  double depth_max = 0;
-  for (const PathPoint& p : r.points)
-    if (p.branch == 0) depth_max = std::max(depth_max, p.state.depth);
-  if (!(depth_max > 0)) return;
   std::optional<Progress> progress;
   const CompanionRun c = run_companion(
       cf, r, threads,
       [&](const CompanionRun& built) {
         err << "companion run for the force's discretisation error (element sizes x2): "
             << built.shell_unknowns << " shell unknowns\n";
-        progress.emplace(err, depth_max);
+        progress.emplace(err, built.depth_max);
       },
       [&](const PathPoint& p, const cont::Vector&) {
         progress->show(p);
@@ -258,8 +254,7 @@ void add_force_errors(const CaseFile& cf, int threads, PathResult& r, std::ostre
       });
   if (progress) progress->done();
   if (!c.why_not.empty())
-    err << "shellindent: warning: no force error estimate: the companion mesh (element sizes x2) "
-           "cannot be built: "
+    err << "shellindent: warning: no force error estimate (companion run, element sizes x2): "
         << c.why_not << "\n";
   else if (!c.path.completed)
     err << "shellindent: warning: the companion run stopped"

@@ -98,5 +98,16 @@ TEST(CompanionMesh, NoEstimateWithoutATwinPoint) {
   EXPECT_EQ(largest_force_error(none), nullptr);
 }
 
+// A run that never left depth 0 (it failed at the start) has no depths for a companion: said, and
+// nothing is built or run.
+TEST(CompanionMesh, NoCompanionForARunWithoutAPositiveDepth) {
+  PathResult run;
+  run.points = {point(0, 0)};
+  const CompanionRun c = run_companion(IndentationCase{}, run, 1);
+  EXPECT_EQ(c.why_not, "the run has no point at a positive depth");
+  EXPECT_TRUE(c.path.points.empty());
+  EXPECT_FALSE(run.companion_mesh);
+}
+
 }  // namespace
 }  // namespace si
