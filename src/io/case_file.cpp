@@ -109,12 +109,8 @@ bool has_mesh_file(const MapReader& top) {
 // mesh.file, resolved against the directory of the case file, must exist now (nothing is run or
 // written for a case whose mesh cannot be read).
 void read_mesh_file(const MapReader& map, MeshSpec& mesh) {
-  if (map.has("error_estimate"))
-    throw_input(
-        "an imported mesh (mesh.file) has no element sizes to double for a companion run: "
-        "`error_estimate` needs a built-in mesh (its Zienkiewicz-Zhu estimate is always on)",
-        map.where("error_estimate"));
-  map.allow_only({"element", "file", "reorient", "flip", "symmetry", "tolerance"});
+  map.allow_only(
+      {"element", "file", "reorient", "flip", "symmetry", "tolerance", "error_estimate"});
   const std::filesystem::path file = map.scalar("file");
   const std::filesystem::path base = std::filesystem::path(map.where().file).parent_path();
   mesh.file = (file.is_absolute() ? file : base / file).string();
@@ -151,8 +147,13 @@ MeshSpec read_mesh(const MapReader& top, ShellType shell, bool graded) {
   mesh.refine_radius = map->positive_or("refine_radius", Dimension::kLength, mesh.refine_radius);
   mesh.symmetry = map->choice_or("symmetry", kSymmetries, mesh.symmetry);
   mesh.tolerance = fraction_or(*map, "tolerance", 0.0);
-  // An imported mesh has no sizes to double (`file` allows no error_estimate key).
   mesh.error_estimate = map->choice_or("error_estimate", kErrorEstimates, mesh.error_estimate);
+  if (!mesh.file.empty() && mesh.error_estimate == ErrorEstimate::kCompanion)
+    throw_input(
+        "an imported mesh (mesh.file) has no element sizes to double for a companion run: "
+        "`companion` needs a built-in mesh (the Zienkiewicz-Zhu estimate, `recovery`, is always "
+        "on)",
+        map->where("error_estimate"));
   return mesh;
 }
 

@@ -132,7 +132,8 @@ TEST(RunCommand, CompanionRunStatesTheForceError) {
   EXPECT_FALSE(contains(testing::read_file(plain / "out" / "path.csv"), "force_error"));
 }
 
-// An imported mesh has no sizes to double: the key is refused with the reason.
+// An imported mesh has no sizes to double: `companion` is refused with the reason, `recovery`
+// accepted.
 TEST(RunCommand, CompanionWithAnImportedMeshIsRefused) {
   const fs::path dir = fresh_dir("error_companion_file");
   std::ofstream(dir / "plate.msh") << "not read";
@@ -149,6 +150,13 @@ TEST(RunCommand, CompanionWithAnImportedMeshIsRefused) {
   EXPECT_TRUE(contains(r.output, "mesh.error_estimate")) << r.output;
   EXPECT_TRUE(contains(r.output, "no element sizes to double")) << r.output;
   EXPECT_FALSE(fs::exists(dir / "out"));
+  // `recovery` (the default) is allowed with a file: the run gets as far as reading the mesh.
+  std::string recovery = text;
+  recovery.replace(recovery.find("companion"), 9, "recovery");
+  const auto ok = run_cli("run '" + write_case(dir, recovery).string() + "' --out '" +
+                          (dir / "out").string() + "'");
+  EXPECT_FALSE(contains(ok.output, "error_estimate")) << ok.output;
+  EXPECT_TRUE(contains(ok.output, "plate.msh")) << ok.output;
 }
 
 TEST(RunCommand, IndenterBesideTheShellIsRefused) {
