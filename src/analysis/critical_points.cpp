@@ -5,12 +5,11 @@
 #include <optional>
 
 #include "analysis/grid_features.hpp"
+#include "analysis/onset_watch.hpp"
 #include "analysis/path_columns.hpp"
 #include "analysis/stiffness_wells.hpp"
 #include "continuation/brent_root.hpp"
 #include "continuation/curve_features.hpp"
-#include "continuation/kinsol_corrector.hpp"
-#include "indentation/linear_indentation.hpp"
 
 namespace si {
 namespace {
@@ -305,61 +304,6 @@ void collect_event_points(const std::vector<cont::Event>& events, int force, Cri
   }
 }
 
-}  // namespace si
-
-namespace si {
-
-class OnsetWatch {
- public:
-  explicit OnsetWatch(const IndentationSetup& setup)
-      : twin_(linear_case(setup.spec), 1),
-        fast_(*twin_.problem),
-        fraction_(setup.spec.path.nonlinearity_fraction) {}
-
-  double linear_force(double h) { return twin_.problem->evaluate(fast_.solve(h), h).force; }
-
-  void add(const PathPoint& p, const cont::Vector& z) {
-    if (crossed_ || !passing_) return;
-    const double h = p.state.depth;
-    if (p.index > 0 && !(h > last_depth_)) {  // the depth turns: the first passage ends
-      passing_ = false;
-      return;
-    }
-    if (h > 0) {
-      const double t_lin = linear_force(h);
-      if (std::abs(p.state.force - t_lin) / std::abs(t_lin) - fraction_ >= 0) {
-        crossed_ = true;
-        return;
-      }
-    }
-    last_depth_ = h;
-    last_z_ = z;
-  }
-
-  // The onset's bracket start, if the run crossed the fraction on its first passage.
-  bool bracket(double from, cont::Vector& z) const {
-    if (!crossed_ || from != last_depth_ || last_z_.size() == 0) return false;
-    z = last_z_;
-    return true;
-  }
-
- private:
-  // The same case with linear kinematics; no damage probe (no criteria): only its force is read.
-  static IndentationCase linear_case(const IndentationCase& spec) {
-    IndentationCase c = spec;
-    c.kinematics = Kinematics::kLinear;
-    if (c.damage) c.damage->criteria.clear();
-    return c;
-  }
-  IndentationSetup twin_;
-  LinearIndentation fast_;
-  double fraction_;
-  bool crossed_ = false;
-  bool passing_ = true;
-  double last_depth_ = 0;
-  cont::Vector last_z_;
-};
-
 namespace {
 
 int position_of(const std::vector<std::string>& names, const std::string& name) {
@@ -399,20 +343,12 @@ CriticalPoints find_critical_points(IndentationSetup& setup, const PathResult& r
   } else {
     std::shared_ptr<OnsetWatch> own = watch ? nullptr : watch_onset(setup);
     OnsetWatch& w = watch ? *watch : *own;
-    // The run's corrector at the trial depth, from the bracket start's state (in the layout of
-    // the candidates at the end of the run; where it fails, the points are used). Not after a
-    // stop (Ctrl-C): each re-solve costs a step (about 100 s on a 1e6-unknown cap), and the user
-    // asked for the results now.
+    // The run's corrector at the trial depths, from the states the watch kept (where it fails,
+    // the points are used). Not after a stop (Ctrl-C): each re-solve costs a step (about 100 s
+    // on a 1e6-unknown cap), and the user asked for the results now.
     const bool stopped = r.status == RunStatus::kStopped;
     const ExactForce exact = [&](double from, double h, double& t) {
-      IndentationProblem& p = *setup.problem;
-      cont::Vector z;
-      if (stopped || !w.bracket(from, z)) return false;
-      z = in_present_layout(z, p);
-      if (z.size() == 0 || !cont::solve_at(p, z, h, path_newton_settings(setup)).converged)
-        return false;
-      t = p.evaluate(z, h).force;
-      return true;
+      return !stopped && w.solve_force(setup, from, h, t);
     };
     find_nonlinearity_onset(
         r.points, force, [&](double h) { return w.linear_force(h); }, out.nonlinearity_fraction,

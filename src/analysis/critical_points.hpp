@@ -44,10 +44,10 @@ void find_nonlinearity_onset(const std::vector<PathPoint>& points, int force_slo
                              const LinearForce& linear, double fraction, CriticalPoints& out,
                              const ExactForce& exact = {});
 
-// Keeps, during a run, the state of the last point before the force first departs from the
-// linear-kinematics force by the fraction (the onset's bracket start), so that the onset can be
-// solved exactly after the run; holds the case's linear twin. Null for a case without an onset
-// (linear kinematics, a local law).
+// Keeps, during a run, the states on both sides of the point where the force first departs from
+// the linear-kinematics force by the fraction (the onset's bracket), so that the onset can be
+// solved exactly after the run (onset_watch.hpp); holds the case's linear twin. Null for a case
+// without an onset (linear kinematics, a local law, a support frame).
 class OnsetWatch;
 std::shared_ptr<OnsetWatch> watch_onset(const IndentationSetup& setup);
 void watch_point(OnsetWatch& watch, const PathPoint& point, const cont::Vector& z);

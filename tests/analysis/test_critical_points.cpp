@@ -10,7 +10,8 @@
 //  * the limit points and bifurcations are the continuation's events, sorted by kind;
 //  * on the paper's cap (coarse quarter mesh, [0/90]2S): the onset by bisection of natural
 //    solves of the nonlinear and the linear cases agrees with the reported one within its
-//    stated accuracy.
+//    stated accuracy; the watch's trial solves (each from the solved states around it) give the
+//    natural solve's force, solve a depth once, and near a solved depth take few iterations.
 #include "analysis/critical_points.hpp"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 #include <cmath>
 
 #include "../indentation/indentation_test_support.hpp"
+#include "analysis/onset_watch.hpp"
 
 namespace si {
 namespace {
@@ -304,6 +306,42 @@ TEST(CriticalPoints, PaperCapOnsetAgreesWithBisectionOfNaturalSolves) {
   EXPECT_EQ(rl.critical.onset_status, OnsetStatus::kLinearKinematics);
   EXPECT_TRUE(rl.critical.inflections.empty());
   EXPECT_TRUE(rl.critical.limit_points.empty());
+}
+
+// The onset's trial solves start from the solved states on either side of the trial depth: the
+// force is the natural run's (to the corrector's tolerance), a depth is not solved twice, and a
+// trial between the bracket's ends takes fewer Newton iterations than the run's step across it,
+// one next to a solved trial at most two.
+TEST(OnsetWatch, TrialSolvesReuseSolvedStatesAndAgreeWithNaturalSolves) {
+  IndentationSetup s(small_cap("nonlinear", 3.0), 1);
+  const std::shared_ptr<OnsetWatch> watch = watch_onset(s);
+  ASSERT_TRUE(watch);
+  PathControl control;
+  control.critical_points = false;
+  const PathResult r = run_indentation_path(s, watching(watch, {}), control);
+  ASSERT_TRUE(r.completed) << r.reason;
+  const auto [from, to] = watch->bracket();
+  ASSERT_LT(from, to);
+  int step_iterations = 0;  // the run's corrector from the bracket's start to its end
+  for (const PathPoint& p : r.points)
+    if (p.state.depth == to) step_iterations = p.iterations;
+  double t = 0;
+  EXPECT_FALSE(watch->solve_force(s, from + 1e-3, 0.5 * (from + to), t));  // not its bracket
+  EXPECT_EQ(watch->trial_solves(), 0);
+  const double h = from + 0.5 * (to - from);
+  ASSERT_TRUE(watch->solve_force(s, from, h, t));
+  EXPECT_NEAR(t, force_at("nonlinear", h), 1e-8 * std::abs(t));
+  double again = 0;
+  ASSERT_TRUE(watch->solve_force(s, from, h, again));
+  EXPECT_EQ(again, t);
+  EXPECT_EQ(watch->trial_solves(), 1);
+  const int before = watch->trial_iterations();
+  EXPECT_LT(before, step_iterations);
+  const double near = h + 1e-3 * (to - from);
+  ASSERT_TRUE(watch->solve_force(s, from, near, t));
+  EXPECT_EQ(watch->trial_solves(), 2);
+  EXPECT_LE(watch->trial_iterations() - before, 2);
+  EXPECT_NEAR(t, force_at("nonlinear", near), 1e-8 * std::abs(t));
 }
 
 // A run the user stopped (Ctrl-C) reports the onset from its points, without the re-solves that

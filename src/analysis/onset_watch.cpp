@@ -1,0 +1,97 @@
+#include "analysis/onset_watch.hpp"
+
+#include <cmath>
+
+#include "continuation/kinsol_corrector.hpp"
+
+namespace si {
+namespace {
+
+// The same case with linear kinematics; no damage probe (no criteria): only its force is read.
+IndentationCase linear_case(const IndentationCase& spec) {
+  IndentationCase c = spec;
+  c.kinematics = Kinematics::kLinear;
+  if (c.damage) c.damage->criteria.clear();
+  return c;
+}
+
+}  // namespace
+
+OnsetWatch::OnsetWatch(const IndentationSetup& setup)
+    : twin_(linear_case(setup.spec), 1),
+      fast_(*twin_.problem),
+      fraction_(setup.spec.path.nonlinearity_fraction) {}
+
+double OnsetWatch::linear_force(double h) {
+  return twin_.problem->evaluate(fast_.solve(h), h).force;
+}
+
+void OnsetWatch::add(const PathPoint& p, const cont::Vector& z) {
+  if (crossed_ || !passing_) return;
+  const double h = p.state.depth;
+  if (p.index > 0 && !(h > last_depth_)) {  // the depth turns: the first passage ends
+    passing_ = false;
+    return;
+  }
+  if (h > 0) {
+    const double t_lin = linear_force(h);
+    if (std::abs(p.state.force - t_lin) / std::abs(t_lin) - fraction_ >= 0) {
+      crossed_ = true;
+      if (last_z_.size() > 0)
+        solved_ = {{last_depth_, last_z_, std::nan(""), false}, {h, z, p.state.force, false}};
+      return;
+    }
+  }
+  last_depth_ = h;
+  last_z_ = z;
+}
+
+std::pair<double, double> OnsetWatch::bracket() const {
+  if (solved_.size() < 2) return {1, 0};
+  return {solved_[0].depth, solved_[1].depth};
+}
+
+cont::Vector OnsetWatch::start_for(const IndentationProblem& p, double h) const {
+  const Solved* below = nullptr;
+  const Solved* above = nullptr;
+  for (const Solved& s : solved_) {
+    if (s.depth <= h && (!below || s.depth > below->depth)) below = &s;
+    if (s.depth >= h && (!above || s.depth < above->depth)) above = &s;
+  }
+  if (!below) return {};
+  const cont::Vector a = in_present_layout(below->z, p);
+  if (!above || above->depth == below->depth || a.size() == 0) return a;
+  const cont::Vector b = in_present_layout(above->z, p);
+  if (b.size() != a.size()) return a;
+  const double t = (h - below->depth) / (above->depth - below->depth);
+  return (1 - t) * a + t * b;
+}
+
+bool OnsetWatch::solve_force(IndentationSetup& setup, double from, double h, double& force) {
+  if (!crossed_ || solved_.empty() || from != solved_.front().depth) return false;
+  for (const Solved& s : solved_)
+    if (s.trial && s.depth == h) {
+      force = s.force;
+      return true;
+    }
+  IndentationProblem& p = *setup.problem;
+  const cont::NewtonSettings newton = path_newton_settings(setup);
+  cont::Vector z = start_for(p, h);
+  bool converged = false;
+  const auto corrector = [&] {
+    const cont::NewtonResult r = cont::solve_at(p, z, h, newton);
+    ++solves_;
+    iterations_ += r.iterations;
+    return r.converged;
+  };
+  if (z.size() > 0) converged = corrector();
+  if (!converged) {  // the bracket's start, as before the interpolated starts
+    z = in_present_layout(solved_.front().z, p);
+    if (z.size() == 0 || !corrector()) return false;
+  }
+  force = p.evaluate(z, h).force;
+  solved_.push_back({h, z, force, true});
+  return true;
+}
+
+}  // namespace si
