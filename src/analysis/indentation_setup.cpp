@@ -6,6 +6,7 @@
 
 #include "analysis/local_contact.hpp"
 #include "analysis/path_columns.hpp"
+#include "analysis/refine_zone.hpp"
 #include "contact/indenter_factory.hpp"
 #include "core/error.hpp"
 #include "model/geometric_imperfection.hpp"
@@ -60,7 +61,7 @@ IndenterPose default_indenter_pose(const IndentationCase& c, const ShellModel& m
 }
 
 IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolverKind linear_solver)
-    : spec(std::move(c)), model(build_shell_model(spec)) {
+    : spec(with_refine_zone(std::move(c))), model(build_shell_model(spec)) {
   if (spec.path.imperfection) {  // before anything reads the mesh's positions
     imperfection = seed_imperfection(spec, threads, linear_solver);
     add_imperfection(model.mesh, imperfection->shape);

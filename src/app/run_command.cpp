@@ -237,12 +237,13 @@ void print_error_summary(const PathResult& r, double tolerance, std::ostream& ou
 
 // mesh.error_estimate: companion - the case again on the mesh with twice the element sizes, at
 // the run's depths, for every point's force_error (analysis/companion_mesh.hpp), with its own
-// progress lines; what it could not do is said, and the run's own results stand.
-void add_force_errors(const CaseFile& cf, int threads, PathResult& r, std::ostream& err) {
-  if (cf.mesh.error_estimate != ErrorEstimate::kCompanion || interrupted()) return;
+// progress lines; what it could not do is said, and the run's own results stand. `run` is the
+// run's own case as its set-up resolved it (the refined zone the companion must share).
+void add_force_errors(const IndentationCase& run, int threads, PathResult& r, std::ostream& err) {
+  if (run.mesh.error_estimate != ErrorEstimate::kCompanion || interrupted()) return;
   std::optional<Progress> progress;
   const CompanionRun c = run_companion(
-      cf, r, threads,
+      run, r, threads,
       [&](const CompanionRun& built) {
         err << "companion run for the force's discretisation error (element sizes x2): "
             << built.shell_unknowns << " shell unknowns\n";
@@ -301,6 +302,13 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
       << setup.problem->num_shell_unknowns() << " shell unknowns, "
       << setup.problem->candidates().size() << " contact candidates; the indenter touches after "
       << setup.problem->first_touch() << " mm of travel from indenter.position, where depth 0 is\n";
+  if (!cf.mesh.refine_radius && setup.spec.mesh.refine_radius) {
+    char zone[32];
+    std::snprintf(zone, sizeof zone, "%.3g", *setup.spec.mesh.refine_radius);
+    err << "mesh: refined to size_apex within " << zone
+        << " mm of the apex, where the indenter at depth_max would cut the undeformed face "
+           "(mesh.refine_radius sets it)\n";
+  }
   if (setup.imperfection) err << imperfection_summary(*setup.imperfection) << "\n";
   if (cf.path.stability && setup.model.symmetry_factor > 1)
     err << "note: path.stability on a symmetric part of the shell sees only the modes symmetric "
@@ -335,7 +343,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
   if (r.status == RunStatus::kStopped && interrupted())
     r.reason = std::string("interrupted (") + interrupt_name() + ")";
   const int event_files = vtus.after_run(setup, r);
-  add_force_errors(cf, o.threads, r, err);
+  add_force_errors(setup.spec, o.threads, r, err);
 
   const bool local = setup.problem->local_law().kind != LocalLawKind::kNone;
   out << "Indentation of " << cf.file << " (" << run_method_name(r.method)

@@ -144,7 +144,9 @@ MeshSpec read_mesh(const MapReader& top, ShellType shell, bool graded) {
   mesh.element = map->choice_or("element", kElements, mesh.element);
   mesh.size_apex = map->positive_or("size_apex", Dimension::kLength, mesh.size_apex);
   mesh.size_edge = map->positive_or("size_edge", Dimension::kLength, mesh.size_edge);
-  mesh.refine_radius = map->positive_or("refine_radius", Dimension::kLength, mesh.refine_radius);
+  if (map->has("refine_radius"))
+    mesh.refine_radius =
+        map->positive_or("refine_radius", Dimension::kLength, kDefaultRefineRadius);
   mesh.symmetry = map->choice_or("symmetry", kSymmetries, mesh.symmetry);
   mesh.tolerance = fraction_or(*map, "tolerance", 0.0);
   mesh.error_estimate = map->choice_or("error_estimate", kErrorEstimates, mesh.error_estimate);

@@ -1,6 +1,7 @@
 // How the shell is meshed (docs/case-file.md `mesh`; shell_model.hpp builds it).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "model/symmetry.hpp"
@@ -14,12 +15,17 @@ namespace si {
 // (analysis/companion_mesh.hpp).
 enum class ErrorEstimate { kRecovery, kCompanion };
 
+// The refined zone's radius without an indenter to size it from (load-controlled runs).
+constexpr double kDefaultRefineRadius = 13.0;  // mm
+
 // Mesh size grades from size_apex at the indentation point to size_edge beyond refine_radius.
 struct MeshSpec {
   ElementType element = ElementType::kMitc4;
-  double size_apex = 0.5;       // mm
-  double size_edge = 2.0;       // mm
-  double refine_radius = 13.0;  // mm, measured from the indentation point in plan
+  double size_apex = 0.5;  // mm
+  double size_edge = 2.0;  // mm
+  // mm, measured from the indentation point in plan. None: the indenter's reach at depth_max
+  // (analysis/refine_zone.hpp sets it before the mesh is built), else kDefaultRefineRadius.
+  std::optional<double> refine_radius;
   // The largest estimated discretisation error the user accepts (relative: the force's with
   // kCompanion, else the energy norm's, IndentationState::error_estimate); a run above it warns.
   // 0: no tolerance.
@@ -39,5 +45,9 @@ struct MeshSpec {
   bool reorient = false;
   bool flip = false;
 };
+
+inline double refine_radius_or_default(const MeshSpec& m) {
+  return m.refine_radius.value_or(kDefaultRefineRadius);
+}
 
 }  // namespace si

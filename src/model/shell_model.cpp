@@ -39,7 +39,7 @@ std::vector<int> set_union(const Mesh& mesh, const std::vector<std::string>& nam
 }
 
 LineGrading line_grading(const MeshSpec& spec) {
-  return {spec.size_apex, spec.size_edge, spec.refine_radius};
+  return {spec.size_apex, spec.size_edge, refine_radius_or_default(spec)};
 }
 
 // Stations from the centre outwards, mirrored for the full model.
@@ -163,9 +163,9 @@ std::string text_of_edge(EdgeCondition edge) {
 // 1/size with the size growing linearly from size_apex to size_edge beyond refine_radius).
 double line_count(double length, const MeshSpec& mesh) {
   const double half = length / 2, ha = mesh.size_apex, he = mesh.size_edge;
-  if (!mesh.graded || mesh.refine_radius >= half || he <= ha) return length / ha;
-  return 2 *
-         (mesh.refine_radius / ha + (half - mesh.refine_radius) * std::log(he / ha) / (he - ha));
+  const double refine = refine_radius_or_default(mesh);
+  if (!mesh.graded || refine >= half || he <= ha) return length / ha;
+  return 2 * (refine / ha + (half - refine) * std::log(he / ha) / (he - ha));
 }
 
 // Element count of the requested mesh, from above (the graded disk meshes have size_apex
@@ -176,7 +176,7 @@ double estimated_element_count(const ShellSpec& shell, const MeshSpec& mesh) {
     case ShellType::kSphericalCap:
     case ShellType::kFlatCircularPlate: {
       const double r = shell.type == ShellType::kSphericalCap ? shell.base_radius : shell.radius;
-      const double inner = std::min(mesh.refine_radius, r);
+      const double inner = std::min(refine_radius_or_default(mesh), r);
       // Cap surface area exceeds its plan area by at most a factor 2 (hemisphere).
       return 2.0 * kPi *
              (inner * inner / (mesh.size_apex * mesh.size_apex) +
@@ -379,15 +379,15 @@ Mesh shell_mesh(const ShellSpec& shell, const MeshSpec& spec) {
       s.sphere_radius = shell.radius;
       s.size_apex = spec.size_apex;
       s.size_edge = spec.size_edge;
-      s.refine_radius = spec.refine_radius;
+      s.refine_radius = refine_radius_or_default(spec);
       s.symmetry = spec.symmetry;
       Mesh m = spherical_cap_mesh(s);
       set_node_set(m, "rim", m.node_sets.at("edge"));
       return m;
     }
     case ShellType::kFlatCircularPlate: {
-      Mesh m = circular_plate_mesh(shell.radius, spec.size_apex, spec.size_edge, spec.refine_radius,
-                                   spec.symmetry);
+      Mesh m = circular_plate_mesh(shell.radius, spec.size_apex, spec.size_edge,
+                                   refine_radius_or_default(spec), spec.symmetry);
       set_node_set(m, "apex", m.node_sets.at("center"));
       set_node_set(m, "rim", m.node_sets.at("edge"));
       return m;

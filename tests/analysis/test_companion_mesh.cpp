@@ -50,7 +50,7 @@ TEST(CompanionMesh, CaseDoublesTheSizesAndLandsOnTheRunsDepths) {
   const IndentationCase twin = companion_case(c, r);
   EXPECT_DOUBLE_EQ(twin.mesh.size_apex, 0.8);
   EXPECT_DOUBLE_EQ(twin.mesh.size_edge, 3.0);
-  EXPECT_DOUBLE_EQ(twin.mesh.refine_radius, 9);
+  EXPECT_EQ(twin.mesh.refine_radius, 9.0);
   EXPECT_EQ(twin.mesh.error_estimate, ErrorEstimate::kRecovery);  // no companion of its own
   EXPECT_EQ(twin.mesh.tolerance, 0);
   EXPECT_EQ(twin.path.depths, (std::vector<double>{0.5, 0.9, 1.25}));

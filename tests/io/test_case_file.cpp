@@ -37,7 +37,7 @@ TEST(CaseFile, ReadsThePaperCapStudy) {
   EXPECT_EQ(c.mesh.element, ElementType::kMitc4);
   EXPECT_DOUBLE_EQ(c.mesh.size_apex, 0.5);
   EXPECT_DOUBLE_EQ(c.mesh.size_edge, 2.0);
-  EXPECT_DOUBLE_EQ(c.mesh.refine_radius, 13.0);
+  EXPECT_EQ(c.mesh.refine_radius, 13.0);
   EXPECT_EQ(c.mesh.symmetry, Symmetry::kFull);
   EXPECT_EQ(c.kinematics, Kinematics::kNonlinear);
   EXPECT_EQ(c.indenter.shape, IndenterShape::kSphere);
@@ -64,6 +64,7 @@ TEST(CaseFile, OptionalSectionsDefaultToThePaperCase) {
   EXPECT_DOUBLE_EQ(c.shell.radius, 80.9);
   EXPECT_EQ(c.shell.edge, EdgeCondition::kClamped);
   EXPECT_EQ(c.mesh.element, ElementType::kMitc4);
+  EXPECT_FALSE(c.mesh.refine_radius);  // sized from the indenter by the set-up
   EXPECT_EQ(c.kinematics, Kinematics::kNonlinear);
   EXPECT_EQ(c.indenter.shape, IndenterShape::kSphere);
   EXPECT_DOUBLE_EQ(c.indenter.radius, 12.7);
