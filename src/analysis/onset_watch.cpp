@@ -68,7 +68,7 @@ cont::Vector OnsetWatch::start_for(const IndentationProblem& p, double h) const 
 }
 
 bool OnsetWatch::solve_force(IndentationSetup& setup, double from, double h, double& force) {
-  if (!crossed_ || solved_.empty() || from != solved_.front().depth) return false;
+  if (solved_.empty() || from != solved_.front().depth) return false;  // never crossed
   for (const Solved& s : solved_)
     if (s.trial && s.depth == h) {
       force = s.force;

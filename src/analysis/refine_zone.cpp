@@ -61,8 +61,7 @@ Profile profile_of(const IndenterSpec& s) {
 // flattest direction: a cap's face is a sphere; plates and a cylindrical panel's axis are flat.
 double face_drop(const IndentationCase& c, double r) {
   if (c.shell.type != ShellType::kSphericalCap) return 0;
-  const double rho = c.shell.radius + contact_face_offset(c);
-  return r < rho ? rho - std::sqrt(rho * rho - r * r) : kInfinity;
+  return circle_rise(c.shell.radius + contact_face_offset(c), r);
 }
 
 }  // namespace
