@@ -76,17 +76,12 @@ def interp4(x: np.ndarray, y: np.ndarray, x0: float) -> float:
     return float(out)
 
 
-def ccx_points(depth: float) -> tuple[list[float], float]:
-    """Printed travels and the largest increment (a fraction of the step). Every 1/16 of a
-    2 mm step (0.125 mm); for 10 mm every 1/64 (0.156 mm) up to 2 mm (the four deflections lie
-    below 1.6 mm), then every 1/16. Binary fractions of the step on purpose: with decimal time
-    points (0.65 of the step) ccx 2.20 met a time point after a cut-back increment with an
-    increment of size 0, found the matrix singular and stopped (the 0.3 mm mesh at 1.3 mm)."""
-    fine = 16 if depth <= 2.0 else 64
-    pts = [depth * k / fine for k in range(1, fine + 1) if depth * k / fine <= 2.0 + 1e-9]
-    if depth > 2.0:
-        pts += [depth * k / 16 for k in range(1, 17) if depth * k / 16 > 2.0 + 1e-9]
-    return pts, 1 / 16
+def ccx_increment_max(depth: float) -> float:
+    """The largest increment, a fraction of the step: 0.125 mm of travel at 2 mm, 0.25 mm at
+    10 mm. Every converged increment is printed (no *TIME POINTS: with time points ccx 2.20
+    met one after a cut-back with an increment of size zero and stopped, on decimal and on
+    binary fractions of the step alike), so this also bounds the spacing that interp4 reads."""
+    return min(1 / 16, 0.25 / depth)
 
 
 def run_ccx_shell(level: int, depth: float) -> dict:
@@ -94,10 +89,9 @@ def run_ccx_shell(level: int, depth: float) -> dict:
     CalculiX makes of S8R, written out so that the quarter model's symmetry planes and the
     clamped edge face are exact; decks.shell_deck says why the S8R keyword model is not used)."""
     mesh = decks.Mesh(level=level, single_layer=True, **run_ccx.SHELL_MESH)
-    points, inc_max = ccx_points(depth)
     case = decks.Case(kind="cap", layup="[0]8", symmetry="quarter", nlgeom=True, travel=depth,
-                      points=points, mesh=mesh, slave_radius=14.0, indenter_extent=14.0,
-                      inc0=1 / 128, inc_max=inc_max)
+                      points=[], mesh=mesh, slave_radius=14.0, indenter_extent=14.0,
+                      inc0=1 / 128, inc_max=ccx_increment_max(depth))
     deck = decks.solid_deck(case)
     work = WORK / f"ccx_D{depth:g}_L{level}"
     work.mkdir(parents=True, exist_ok=True)
