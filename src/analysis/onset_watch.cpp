@@ -46,9 +46,9 @@ void OnsetWatch::add(const PathPoint& p, const cont::Vector& z) {
   last_z_ = z;
 }
 
-std::pair<double, double> OnsetWatch::bracket() const {
-  if (solved_.size() < 2) return {1, 0};
-  return {solved_[0].depth, solved_[1].depth};
+std::optional<std::pair<double, double>> OnsetWatch::bracket() const {
+  if (solved_.size() < 2) return std::nullopt;
+  return std::make_pair(solved_[0].depth, solved_[1].depth);
 }
 
 cont::Vector OnsetWatch::start_for(const IndentationProblem& p, double h) const {

@@ -4,6 +4,7 @@
 // each from the states it already has (issue 19 item 3: no wasted solves).
 #pragma once
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -32,8 +33,8 @@ class OnsetWatch {
   // corrector fails from both the interpolated start and the bracket's start.
   bool solve_force(IndentationSetup& setup, double from, double h, double& force);
 
-  // The bracket [from, to] (mm) once the run has crossed the fraction, else from > to.
-  std::pair<double, double> bracket() const;
+  // The bracket [from, to] (mm) once the run has crossed the fraction; none before.
+  std::optional<std::pair<double, double>> bracket() const;
   int trial_solves() const { return solves_; }          // corrector runs so far (tests, benchmarks)
   int trial_iterations() const { return iterations_; }  // their Newton iterations
 

@@ -316,11 +316,14 @@ TEST(OnsetWatch, TrialSolvesReuseSolvedStatesAndAgreeWithNaturalSolves) {
   IndentationSetup s(small_cap("nonlinear", 3.0), 1);
   const std::shared_ptr<OnsetWatch> watch = watch_onset(s);
   ASSERT_TRUE(watch);
+  EXPECT_FALSE(watch->bracket().has_value());  // nothing crossed before the run
   PathControl control;
   control.critical_points = false;
   const PathResult r = run_indentation_path(s, watching(watch, {}), control);
   ASSERT_TRUE(r.completed) << r.reason;
-  const auto [from, to] = watch->bracket();
+  const auto bracket = watch->bracket();
+  ASSERT_TRUE(bracket.has_value());
+  const auto [from, to] = *bracket;
   ASSERT_LT(from, to);
   int step_iterations = 0;  // the run's corrector from the bracket's start to its end
   for (const PathPoint& p : r.points)
