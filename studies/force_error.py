@@ -4,9 +4,11 @@ companion, docs/theory/discretisation-error.md 4) against its true error on the 
 cap.
 
 The cap: [0]8 of the paper's carbon/epoxy (8 x 0.475 mm), clamped, base radius 25 mm,
-R = 80.9 mm, quarter model, a rigid 12.7 mm sphere on the outer face, linear kinematics (its path
-is exact at each depth, so the only error is the mesh's), forces at travels 0.1, 0.15, ..., 1 mm
-(path.depths). The meshes are one family: size_apex a, size_edge 4 a, refine_radius 13 mm (the
+R = 80.9 mm, quarter model, a rigid 12.7 mm sphere on the outer face, forces at travels 0.1,
+0.15, ..., 1 mm (path.depths). Linear kinematics by default (its path is exact at each depth, so
+the only error is the mesh's); --kinematics nonlinear checks the geometrically nonlinear path,
+whose points are landed on exactly and converged to the corrector's tolerance (1e-10 of the
+residual's scale), so there too the mesh's error is the only one that counts. The meshes are one family: size_apex a, size_edge 4 a, refine_radius 13 mm (the
 default mesh is a = 0.5), a = 1, 0.5, 0.25, 0.125 mm each run with `error_estimate: companion`
 (which runs 2a beside it), and the reference a = 0.0625 mm (about 350,000 unknowns). The true
 error of a mesh at a depth is |F_a - F_ref| / F_ref; the reference's own error is bounded by its
@@ -19,7 +21,8 @@ contact zone (a <= RESOLVED, two elements or more across the contact radius at t
 the force of one mesh and not of the other): the table gives the share of points within a factor
 2 too, not checked.
 
-Run: studies/force_error.py [--quick] [--exe PATH] [--out DIR] [--report FILE]
+Run: studies/force_error.py [--quick] [--kinematics linear|nonlinear] [--meshes 1,0.5,0.25]
+     [--reference 0.125] [--exe PATH] [--out DIR] [--report FILE]
 --quick (ctest): the 0.5 mm mesh with its companion against a 0.25 mm reference. Exit status 0
 if the checks pass. Standard library only.
 """
@@ -35,13 +38,13 @@ REFERENCE = 0.0625
 RESOLVED = 0.5  # mm: the meshes checked (the contact radius is 0.8 mm at 0.1 mm of travel)
 FACTOR = 2.0
 
-CASE = """# studies/force_error.py: the paper's cap [0]8, linear, mesh size_apex {a} mm.
+CASE = """# studies/force_error.py: the paper's cap [0]8, {kinematics}, mesh size_apex {a} mm.
 material: paper-carbon-epoxy
 laminate: {{layup: "[0]8", ply_thickness: 0.475 mm, reference: mid}}
 shell: {{type: spherical_cap, base_radius: 25 mm, radius: 80.9 mm, edge: clamped}}
 mesh: {{element: mitc4, size_apex: {a} mm, size_edge: {e} mm, refine_radius: 13 mm,
         symmetry: quarter{companion}}}
-kinematics: linear
+kinematics: {kinematics}
 indenter: {{shape: sphere, radius: 12.7 mm}}
 contact: {{surface: outer}}
 path: {{depth_max: {dmax} mm, step: 0.05 mm, depths: [{depths}]}}
@@ -49,14 +52,14 @@ output: {{dir: {out}, formats: [csv]}}
 """
 
 
-def run_mesh(exe, out, a, companion):
+def run_mesh(exe, out, a, companion, kinematics):
     """Runs one mesh; returns {depth: (force, force_error_estimate or None)}."""
     name = f"a{a:g}"
     run_dir = os.path.join(out, "runs", name)
     os.makedirs(os.path.join(out, "cases"), exist_ok=True)
     case = os.path.join(out, "cases", name + ".yaml")
     with open(case, "w") as f:
-        f.write(CASE.format(a=a, e=4 * a, companion=", error_estimate: companion" if companion else "",
+        f.write(CASE.format(a=a, e=4 * a, kinematics=kinematics, companion=", error_estimate: companion" if companion else "",
                             dmax=DEPTHS[-1], depths=", ".join(f"{d} mm" for d in DEPTHS),
                             out=run_dir))
     code, wall, stdout, stderr = run_cli(exe, ["run", case], os.path.join(out, name + ".log"))
@@ -109,13 +112,22 @@ def main():
     p.add_argument("--exe", default=default_exe())
     p.add_argument("--out", default="results/force_error")
     p.add_argument("--quick", action="store_true")
+    p.add_argument("--kinematics", choices=["linear", "nonlinear"], default="linear")
+    p.add_argument("--meshes", default=None, help="size_apex values, mm (default 1,0.5,0.25,0.125)")
+    p.add_argument("--reference", type=float, default=None, help="the reference's size_apex, mm")
     p.add_argument("--report", default=None, help="write the Markdown table here")
     a = p.parse_args()
     meshes, ref = ([0.5], 0.25) if a.quick else (MESHES, REFERENCE)
-    runs = {m: run_mesh(a.exe, a.out, m, True) for m in meshes}
-    reference = run_mesh(a.exe, a.out, ref, False)
+    if a.meshes:
+        meshes = [float(v) for v in a.meshes.split(",")]
+    ref = a.reference or ref
+    if not all(m > ref for m in meshes):
+        sys.exit(f"force_error: every mesh must be coarser than the reference ({ref} mm)")
+    k = a.kinematics
+    runs = {m: run_mesh(a.exe, a.out, m, True, k) for m in meshes}
+    reference = run_mesh(a.exe, a.out, ref, False, k)
     # The reference's own error, from the next coarser run: its companion estimate.
-    coarser = runs.get(2 * ref) or run_mesh(a.exe, a.out, 2 * ref, False)
+    coarser = runs.get(2 * ref) or run_mesh(a.exe, a.out, 2 * ref, False, k)
     band = max(abs(reference[d][0] - coarser[d][0]) / (3 * reference[d][0]) for d in DEPTHS)
     rows = [compare(m, runs[m], reference, band) for m in meshes]
     write_csv(os.path.join(a.out, "force_error.csv"), list(rows[0].keys()),
