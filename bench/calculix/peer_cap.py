@@ -14,11 +14,13 @@ both single-threaded under `nice -n 19`, interleaved in one invocation (paired: 
 machine load for both). CPU time is the child's getrusage (user + system).
 
 For each run: the force at 0.25, 0.5, 0.75 and 1.5 mm of apex mid-surface deflection (cubic
-interpolation through the four nearest printed points). Each code's converged force is the
-Richardson extrapolation of its three finest meshes where they converge monotonically (else
-its finest mesh); each mesh's error is its largest relative difference from that limit over
-the four deflections. The cheapest mesh within 1 % is each code's entry; the CPU ratio of the
-two entries is printed.
+interpolation through the four nearest printed points), after cutting the run at its first
+artefact (first_artefact). Each code's converged force is the Richardson extrapolation of its
+three finest meshes where they are in the asymptotic range, else its finest mesh with the three
+meshes' spread as a band; each mesh's error is its largest relative difference from that limit,
+plus the band, over the four deflections. The cheapest mesh within 1 % is each code's entry and
+the CPU ratio of the two entries is printed; with no CalculiX mesh within 1 %, a lower bound
+(cost_bound) under a stated assumption.
 
 Writes OUT/peer_cap_D{depth}.csv (one row per run) and OUT/peer_cap_summary.csv.
 """
@@ -153,7 +155,7 @@ def first_artefact(travel: np.ndarray, f: np.ndarray) -> int | None:
             continue
         before = (f[i] - f[i - 1]) / (travel[i] - travel[i - 1])
         after = (f[i + 1] - f[i]) / (travel[i + 1] - travel[i])
-        if after < 0.5 * before:
+        if before > 0 and after < 0.5 * before:
             return i
     return None
 
