@@ -162,13 +162,18 @@ def first_artefact(travel: np.ndarray, f: np.ndarray) -> int | None:
 
 def drop_artefact(r: dict) -> None:
     """Cuts a run's curve at its first artefact (first_artefact) and says so in its status: the
-    targets beyond it have no value, and the run is not one of its code's converged sequence."""
+    deflections beyond the cut have no force (interp4 gives NaN there), those before it count."""
     i = first_artefact(r["travel"], r["f"])
     if i is None:
         return
-    r["status"] = f"artefact at {r['travel'][i]:.3g} mm of travel"
+    r["status"] = f"ok, cut at an artefact at {r['travel'][i]:.3g} mm of travel"
     for key in ("w", "f", "travel"):
         r[key] = r[key][: i + 1]
+
+
+def usable(r: dict) -> bool:
+    """Finished, possibly cut at an artefact (drop_artefact)."""
+    return r["status"].startswith("ok")
 
 
 def run_dir(kind: str, v: float, depth: float) -> Path:
@@ -218,7 +223,7 @@ def converged(runs: list[dict]) -> tuple[np.ndarray, np.ndarray, str]:
     """Each target's limit and its band: Richardson through the three finest runs (band 0); where
     they are not in the asymptotic range, the finest run with the spread of the three as its band
     (a run's error then counts the band: the finest cannot certify itself beyond its spread)."""
-    ok = sorted([r for r in runs if r["status"] == "ok"], key=lambda r: -r["h_mm"])
+    ok = sorted([r for r in runs if usable(r)], key=lambda r: -r["h_mm"])
     fine = ok[-3:]
     lim, band, how = [], [], []
     for k in range(len(TARGETS)):
@@ -226,7 +231,7 @@ def converged(runs: list[dict]) -> tuple[np.ndarray, np.ndarray, str]:
         if len(fine) < 3 or not all(np.isfinite(f)):
             lim.append(float("nan"))
             band.append(float("nan"))
-            how.append("fewer than three runs")
+            how.append("fewer than three forces")
             continue
         fit = richardson([r["h_mm"] for r in fine], f)
         lim.append(fit[0] if fit else f[2])
@@ -242,7 +247,7 @@ def cost_bound(rs: list[dict]) -> dict | None:
     when, at some target, the forces from it to the finest are monotone in h and it differs
     from the finest by more than 1 % (the limit then lies beyond the finest). The mesh within
     1 % costs at least this run's CPU time: a lower bound on that code's entry."""
-    ok = sorted([r for r in rs if r["status"] == "ok"], key=lambda r: -r["h_mm"])
+    ok = sorted([r for r in rs if usable(r)], key=lambda r: -r["h_mm"])
     if not ok:
         return None
     finest = ok[-1]
@@ -302,14 +307,14 @@ def main(argv=None):
             lim, band, how = converged(rs)
             for r in rs:
                 err = max(abs(f / l - 1) + b / abs(l) for f, l, b in zip(r["F"], lim, band)) \
-                    if r["status"] == "ok" else float("nan")
+                    if usable(r) else float("nan")
                 r["err"] = err
                 rows.append(dict(depth_max_mm=depth, code=code, mesh=r["mesh"], h_mm=r["h_mm"],
                                  unknowns=r["unknowns"], cpu_s=r["cpu_s"], wall_s=r["wall_s"],
                                  status=r["status"],
                                  **{f"F_at_w{t:g}_N": f for t, f in zip(TARGETS, r["F"])},
                                  max_err_pct=100 * err, limit=how))
-            within = [r for r in rs if r["status"] == "ok" and r["err"] <= 0.01]
+            within = [r for r in rs if usable(r) and r["err"] <= 0.01]
             best[code] = min(within, key=lambda r: r["cpu_s"]) if within else None
             bound[code] = None if best[code] else cost_bound(rs)
             rows.append(dict(depth_max_mm=depth, code=code, mesh="converged", h_mm=0,
