@@ -107,19 +107,37 @@ def report(rows, path):
         f.write("\n".join(lines) + "\n")
 
 
+def positive_size(text):
+    """--reference: one positive size in mm."""
+    try:
+        size = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}': a size in mm (0.125)")
+    if not size > 0:
+        raise argparse.ArgumentTypeError(f"'{text}': the size must be positive")
+    return size
+
+
+def size_list(text):
+    """--meshes: positive sizes in mm, comma-separated."""
+    return [positive_size(v) for v in text.split(",")]
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--exe", default=default_exe())
     p.add_argument("--out", default="results/force_error")
     p.add_argument("--quick", action="store_true")
     p.add_argument("--kinematics", choices=["linear", "nonlinear"], default="linear")
-    p.add_argument("--meshes", default=None, help="size_apex values, mm (default 1,0.5,0.25,0.125)")
-    p.add_argument("--reference", type=float, default=None, help="the reference's size_apex, mm")
+    p.add_argument("--meshes", default=None, type=size_list,
+                   help="size_apex values, mm (default 1,0.5,0.25,0.125)")
+    p.add_argument("--reference", type=positive_size, default=None,
+                   help="the reference's size_apex, mm")
     p.add_argument("--report", default=None, help="write the Markdown table here")
     a = p.parse_args()
     meshes, ref = ([0.5], 0.25) if a.quick else (MESHES, REFERENCE)
     if a.meshes:
-        meshes = [float(v) for v in a.meshes.split(",")]
+        meshes = a.meshes
     ref = a.reference or ref
     if not all(m > ref for m in meshes):
         sys.exit(f"force_error: every mesh must be coarser than the reference ({ref} mm)")
