@@ -8,8 +8,9 @@ R = 80.9 mm, quarter model, a rigid 12.7 mm sphere on the outer face, forces at 
 0.15, ..., 1 mm (path.depths). Linear kinematics by default (its path is exact at each depth, so
 the only error is the mesh's); --kinematics nonlinear checks the geometrically nonlinear path,
 whose points are landed on exactly and converged to the corrector's tolerance (1e-10 of the
-residual's scale), so there too the mesh's error is the only one that counts. The meshes are one family: size_apex a, size_edge 4 a, refine_radius 13 mm (the
-default mesh is a = 0.5), a = 1, 0.5, 0.25, 0.125 mm each run with `error_estimate: companion`
+residual's scale), so there too the mesh's error is the only one that counts. The meshes are one
+family: size_apex a, size_edge 4 a, refine_radius 13 mm (the default mesh is a = 0.5),
+a = 1, 0.5, 0.25, 0.125 mm each run with `error_estimate: companion`
 (which runs 2a beside it), and the reference a = 0.0625 mm (about 350,000 unknowns). The true
 error of a mesh at a depth is |F_a - F_ref| / F_ref; the reference's own error is bounded by its
 companion estimate from the 0.125 mm run, |F_ref - F_0.125| / 3, reported as a band.
@@ -59,7 +60,8 @@ def run_mesh(exe, out, a, companion, kinematics):
     os.makedirs(os.path.join(out, "cases"), exist_ok=True)
     case = os.path.join(out, "cases", name + ".yaml")
     with open(case, "w") as f:
-        f.write(CASE.format(a=a, e=4 * a, kinematics=kinematics, companion=", error_estimate: companion" if companion else "",
+        f.write(CASE.format(a=a, e=4 * a, kinematics=kinematics,
+                            companion=", error_estimate: companion" if companion else "",
                             dmax=DEPTHS[-1], depths=", ".join(f"{d} mm" for d in DEPTHS),
                             out=run_dir))
     code, wall, stdout, stderr = run_cli(exe, ["run", case], os.path.join(out, name + ".log"))
