@@ -2,7 +2,8 @@
 """Issue 19's paired peer benchmark: CalculiX (expanded S8R shells) and shellindent on one cap.
 
   /usr/bin/python3 bench/calculix/peer_cap.py [--build build] [--depths 2,10]
-      [--ccx-levels 0,1,2,3] [--si-sizes 1.2,0.85,0.6,0.42,0.3,0.21] [--out results]
+      [--ccx-levels 0,1,2,3] [--si-sizes 1.2,0.85,0.6,0.42,0.3,0.21] [--out results] [--reuse]
+  /usr/bin/python3 bench/calculix/peer_cap.py --self-test   (the analysis on closed forms)
 
 The case: the paper's cap, [0]8, clamped, quarter model, 12.7 mm rigid sphere on the outer face,
 frictionless, geometrically nonlinear, travel 0 -> 2 mm and 0 -> 10 mm. Each code runs its own
@@ -265,6 +266,31 @@ def cost_bound(rs: list[dict]) -> dict | None:
     return min(open_runs, key=lambda r: r["cpu_s"])
 
 
+def self_test() -> int:
+    """The analysis's pure parts against closed forms, and what they must not report."""
+    h = [1.2, 0.85, 0.6]  # not a constant ratio
+    lim, p = richardson(h, [5 + 3 * x ** 2 for x in h])
+    assert abs(lim - 5) < 1e-9 and abs(p - 2) < 1e-6, (lim, p)
+    lim, p = richardson(h, [5 - 0.4 * x ** 1.3 for x in h])
+    assert abs(lim - 5) < 1e-9 and abs(p - 1.3) < 1e-6, (lim, p)
+    assert richardson(h, [3573, 3577, 3396]) is None  # a change of sign
+    assert richardson(h, [10, 9, 7]) is None  # growing differences
+    travel = np.linspace(0, 2, 17)
+    hardening = 1e4 * travel ** 1.5
+    assert first_artefact(travel, hardening) is None  # a stiffening curve: nothing
+    flat = hardening.copy()
+    flat[9:] -= 0.9 * (hardening[9:] - hardening[8])  # the slope falls by 90 % after point 8
+    assert first_artefact(travel, flat) == 8, first_artefact(travel, flat)
+    # the bound: a monotone sequence 3 % apart shows the coarse run off; a flat one does not
+    runs = [dict(status="ok", h_mm=hh, cpu_s=c, F=[f] * len(TARGETS))
+            for hh, c, f in [(1.2, 1.0, 103.0), (0.6, 5.0, 100.0)]]
+    assert cost_bound(runs)["cpu_s"] == 5.0
+    runs[0]["F"] = [100.5] * len(TARGETS)
+    assert cost_bound(runs)["cpu_s"] == 1.0
+    print("peer_cap: self-test passed")
+    return 0
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("--build", default=str(ROOT / "build"))
@@ -275,7 +301,11 @@ def main(argv=None):
     p.add_argument("--reuse", action="store_true",
                    help="read runs recorded by an earlier invocation (work/peer/*/run.json) "
                         "instead of running them again: their CPU times are the earlier ones")
+    p.add_argument("--self-test", action="store_true",
+                   help="check the analysis (Richardson, artefacts, bound) on closed forms; no runs")
     a = p.parse_args(argv)
+    if a.self_test:
+        return self_test()
     exe = str(Path(a.build) / "shellindent")
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
