@@ -95,7 +95,7 @@ def run_ccx_shell(level: int, depth: float) -> dict:
                       points=[], mesh=mesh, slave_radius=14.0, indenter_extent=14.0,
                       inc0=1 / 128, inc_max=ccx_increment_max(depth))
     deck = decks.solid_deck(case)
-    work = WORK / f"ccx_D{depth:g}_L{level}"
+    work = run_dir("ccx", level, depth)
     work.mkdir(parents=True, exist_ok=True)
     (work / "job.inp").write_text(deck.text)
     env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1",
@@ -118,7 +118,7 @@ def run_ccx_shell(level: int, depth: float) -> dict:
 
 
 def run_si(exe: str, size: float, depth: float) -> dict:
-    work = WORK / f"si_D{depth:g}_s{size:g}"
+    work = run_dir("si", size, depth)
     work.mkdir(parents=True, exist_ok=True)
     case = work / "case.yaml"
     case.write_text("material: paper-carbon-epoxy\n"
