@@ -264,6 +264,7 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   c.p_max = path.depth_max;
   c.p_min = -path.depth_max;  // a snap-back may reduce the depth; never below minus the path
   c.max_steps = static_cast<int>(20 * path.depth_max / path.step) + 100;
+  c.target_iterations = path.target_iterations;
   c.newton = path_newton_settings(s);
   c.extremum_monitors = {column_name(PathColumn::kForce)};
   c.slope_monitors = slope_monitor_names(run_columns(monitored_criteria(s.spec)));
@@ -450,7 +451,7 @@ cont::NewtonSettings path_newton_settings(const IndentationSetup& s) {
   n.relative_tolerance = 1e-10;
   // The force a gap of one depth step would carry: the scale of the equilibrium residual.
   n.residual_scale = s.problem->stiffness_scale() * s.spec.path.step;
-  n.max_iterations = 25;
+  n.max_iterations = kPathMaxIterations;
   // KINSOL's step limit is an L2 length over all unknowns, and the multipliers are forces (N):
   // its default, 1000 max(1, |z0|), cuts the Newton steps of a stiff shell short (measured: 2 %
   // residual decrease per iteration on the paper's cap). Allow any step the line search accepts.

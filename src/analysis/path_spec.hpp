@@ -27,6 +27,9 @@ struct BranchSwitchSpec {
   int direction = 1;
 };
 
+// The Newton iterations a path step may take before it is cut (analysis/indentation_run.cpp).
+inline constexpr int kPathMaxIterations = 25;
+
 // All lengths in mm.
 struct PathSpec {
   PathMethod method = PathMethod::kPseudoArclength;
@@ -35,6 +38,10 @@ struct PathSpec {
   double step_min = 1e-4;      // default: step / 1000
   double step_max = 1.0;       // default: min(10 step, depth_max)
   std::vector<double> depths;  // optional explicit depths to stop at, increasing, <= depth_max
+  // The step controller's aim in Newton iterations per step: a step that took fewer grows, one
+  // that took more shrinks (continuation/settings.hpp). Fine meshes whose contact set grows by
+  // many nodes per step need 4 at any step size and never grow at the default.
+  int target_iterations = 4;
   // The stability of every point (docs/theory/continuation.md 12) and its changes as events;
   // off by default: the run is then exactly the one without it.
   bool stability = false;

@@ -70,8 +70,8 @@ PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
   PathSpec path;
   if (!top.has("path")) return path;
   const MapReader map(top.at("path"), top.where("path"));
-  map.allow_only({"method", "depth_max", "step", "step_min", "step_max", "depths", "stability",
-                  "nonlinearity_fraction", "imperfection", "branch_switch"});
+  map.allow_only({"method", "depth_max", "step", "step_min", "step_max", "target_iterations",
+                  "depths", "stability", "nonlinearity_fraction", "imperfection", "branch_switch"});
   path.method = map.choice_or("method", path_method_spellings(), path.method);
   path.depth_max = map.positive_or("depth_max", Dimension::kLength, path.depth_max);
   path.step = map.positive_or("step", Dimension::kLength, path.step);
@@ -94,6 +94,11 @@ PathSpec read_path(const MapReader& top, const ContactSpec& contact) {
                     format_quantity(path.step_min, Dimension::kLength) + ", " +
                     format_quantity(path.step_max, Dimension::kLength) + "]",
                 map.where("step"));
+  path.target_iterations = map.integer_or("target_iterations", path.target_iterations);
+  if (path.target_iterations < 2 || path.target_iterations > kPathMaxIterations)
+    throw_input("target_iterations must lie in [2, " + std::to_string(kPathMaxIterations) +
+                    "] (the Newton iterations a step may take)",
+                map.where("target_iterations"));
   if (map.has("depths")) path.depths = read_depth_list(map, "depths", path.depth_max);
   path.stability = map.choice_or("stability", boolean_spellings(), path.stability);
   if (path.stability && contact.local != LocalContactModel::kNone)

@@ -309,3 +309,35 @@ TEST(IndentationPaths, ArclengthLandsOnDepthMaxAndRequestedDepths) {
 
 }  // namespace
 }  // namespace si
+
+namespace si {
+namespace {
+
+// path.target_iterations: the step controller scales the next step by target / iterations
+// (clamped to [1/2, 2]), so a higher target grows steps the default holds (4 iterations) and
+// the path needs fewer points; the points it lands on are the same solutions.
+TEST(IndentationPaths, TargetIterationsGrowsTheStepAndKeepsTheSolution) {
+  CaseFile c =
+      testing::coarse_cap_path_case("[0/0]2S", PathMethod::kPseudoArclength, 3.0, 0.1, 1.0);
+  IndentationSetup base_setup(c, 1);
+  const PathResult base = run_indentation_path(base_setup);
+  ASSERT_TRUE(base.completed) << base.reason;
+  // The comparison means something only if the default held a step at 4 or 5 iterations.
+  ASSERT_TRUE(std::any_of(base.points.begin() + 1, base.points.end() - 1, [](const PathPoint& p) {
+    return p.iterations == 4 || p.iterations == 5;
+  }));
+
+  c.path.target_iterations = 6;
+  IndentationSetup eager_setup(c, 1);
+  const PathResult eager = run_indentation_path(eager_setup);
+  ASSERT_TRUE(eager.completed) << eager.reason;
+  EXPECT_LT(eager.points.size(), base.points.size());
+  // Both land on depth_max exactly; corrector tolerance 1e-10 of the force scale.
+  ASSERT_EQ(base.points.back().state.depth, 3.0);
+  ASSERT_EQ(eager.points.back().state.depth, 3.0);
+  EXPECT_NEAR(eager.points.back().state.force, base.points.back().state.force,
+              1e-8 * base.points.back().state.force);
+}
+
+}  // namespace
+}  // namespace si

@@ -262,6 +262,15 @@ TEST(CaseFileErrors, StepMinAboveStepMax) {
                {"path.step_min", "0.5 mm", 5, "step_min exceeds step_max (0.2 mm)"});
 }
 
+TEST(CaseFileErrors, TargetIterationsOutsideItsRange) {
+  expect_error(kHead + "path: {target_iterations: 1}\n",
+               {"path.target_iterations", "1", 3, "must lie in [2, 25]"});
+  expect_error(kHead + "path: {target_iterations: 26}\n",
+               {"path.target_iterations", "26", 3, "must lie in [2, 25]"});
+  expect_error(kHead + "path: {target_iterations: 4.5}\n",
+               {"path.target_iterations", "4.5", 3, "expected a whole number"});
+}
+
 TEST(CaseFileErrors, DepthsNotIncreasing) {
   expect_error(kHead + "path:\n  depths: [1 mm, 3 mm,\n           2 mm]\n",
                {"path.depths[2]", "2 mm", 5, "depths must increase strictly"});
