@@ -124,6 +124,11 @@ class Case:
     inc0: float = 0.02
     inc_max: float = 0.05
     solver: str = "SPOOLES"
+    # A load with no local part instead of the indenter (kind 'cap'): a uniform pressure on the
+    # whole outer face, scaled so that it carries the same force as `pressure` on the
+    # mid-surface (the shell's load); the indenter is held fixed and has no contact. 0: the
+    # indenter's travel is the load.
+    pressure: float = 0.0        # MPa on the mid-surface
 
     @property
     def thickness(self) -> float:
@@ -379,6 +384,8 @@ def solid_deck(case: Case) -> Deck:
     parts.append("*MATERIAL, NAME=RIGID\n*ELASTIC\n1e7, 0.3\n"
                  "*SOLID SECTION, ELSET=EIND, MATERIAL=RIGID\n")
 
+    if case.pressure > 0:
+        return _pressure_deck(case, parts, bcs, solid, is_top, levels, tie, ne_cap)
     # contact: slave = the cap's outer face within slave_radius, master = the indenter
     slave_mask = is_top & (s_of <= case.slave_radius + 1e-9) & (solid.node_zone == 0)
     slave = ogrid.faces_on(solid, slave_mask, solid.elem_zone == 0)
@@ -416,6 +423,31 @@ def solid_deck(case: Case) -> Deck:
                             for k, m in (("x", on_x), ("y", on_y), ("d", on_d))},
                 line_ref={int(i) + 1: x[i].tolist() for i in np.nonzero(on_x | on_y | on_d)[0]},
                 axis_ref={int(i) + 1: x[i].tolist() for i in np.nonzero(axis)[0]},
+                factor={"quarter": 4, "half": 2, "full": 1}[case.symmetry])
+    return Deck(text="".join(parts), info=info)
+
+
+def _pressure_deck(case: Case, parts, bcs, solid, is_top, levels, tie, ne_cap) -> Deck:
+    """The solid cap under a pressure on its outer face (Case.pressure), one linear increment.
+    The outer face's area element is (1 + t/(2R))^2 times the mid-surface's on a sphere, so the
+    face pressure is scaled by the inverse: the resultant equals the shell's mid-surface load."""
+    if case.kind != "cap" or case.nlgeom:
+        raise ValueError("the pressure load is for the linear cap")
+    R = case.sphere_radius
+    face_p = case.pressure * (R / (R + case.thickness / 2)) ** 2
+    loaded = ogrid.faces_on(solid, is_top)
+    parts += bcs
+    parts.append("*STEP, INC=10\n*STATIC, SOLVER=" + case.solver + "\n1., 1.\n"
+                 "*BOUNDARY\nNIND, 1, 3, 0.\n*DLOAD\n"
+                 + "\n".join(f"{e + 1}, P{f}, {face_p:.12g}" for e, f in loaded) + "\n"
+                 + "*NODE PRINT, NSET=NAPEX\nU\n*NODE PRINT, NSET=NAPEXTOP\nU\n"
+                 "*NODE PRINT, NSET=NFIX, TOTALS=ONLY\nRF\n*END STEP\n")
+    info = dict(kind="cap_pressure", layup=case.layup, symmetry=case.symmetry, travel=0.0,
+                penalty=0.0, nlgeom=False, level=case.mesh.level, h=case.mesh.h,
+                nodes=len(solid.nodes), elements=ne_cap, layers=len(levels) // 2,
+                dofs=3 * len(solid.nodes), tie_radius=tie, pressure=case.pressure,
+                face_pressure=face_p,
+                loaded_faces=len(loaded),
                 factor={"quarter": 4, "half": 2, "full": 1}[case.symmetry])
     return Deck(text="".join(parts), info=info)
 
