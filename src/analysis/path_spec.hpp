@@ -39,8 +39,8 @@ struct PathSpec {
   double step_max = 1.0;       // default: min(10 step, depth_max)
   std::vector<double> depths;  // optional explicit depths to stop at, increasing, <= depth_max
   // The step controller's aim in Newton iterations per step: a step that took fewer grows, one
-  // that took more shrinks (continuation/settings.hpp). Fine meshes whose contact set grows by
-  // many nodes per step need 4 at any step size and never grow at the default.
+  // that took more shrinks (continuation/settings.hpp). On fine meshes the contact set gains
+  // many nodes per step and Newton takes 4 at small steps, where the default stops growing.
   int target_iterations = 4;
   // The stability of every point (docs/theory/continuation.md 12) and its changes as events;
   // off by default: the run is then exactly the one without it.
