@@ -24,6 +24,10 @@ from pathlib import Path
 import numpy as np
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+import decks  # noqa: E402
+
 ROOT = HERE.parent.parent
 RESULTS = HERE / "results"
 WORK = HERE / "work" / "si"
@@ -104,7 +108,7 @@ def main(argv=None):
             rf = np.array([r["force_N"] for r in mine])
             rw = np.array([r["apex_mid_w_mm"] for r in mine])
             for law in a.laws.split(","):
-                tag = f"{layup.strip('[]').replace('/', '-').replace(']', '')}_{kin}_" \
+                tag = f"{decks.layup_slug(layup)}_{kin}_" \
                       f"{law.replace(':', '-')}_" \
                       f"{a.size_apex:g}"
                 case = WORK / f"{tag}.yaml"

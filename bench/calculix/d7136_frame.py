@@ -181,7 +181,7 @@ def solve_signorini(plate: SolidPlate, loads: dict[int, float], clamp: list[int]
 
 
 def compare(build: Path, layup: str, size: float, depth: float, clamped: bool) -> dict:
-    tag = "d7136_frame_{}_{}_{:g}".format(layup.strip("[]").replace("/", "-").replace("]", ""),
+    tag = "d7136_frame_{}_{}_{:g}".format(decks.layup_slug(layup),
                                           "clamps" if clamped else "noclamps", size)
     shell = run_shellindent(build, layup, size, depth, clamped, WORK / tag / "shellindent")
     p = shell["points"]

@@ -37,6 +37,11 @@ LAYUPS = {"[0]8": [0.0] * 8, "[0/90]2S": [0, 90, 0, 90, 90, 0, 90, 0],
           "[45/-45]2S": [45, -45, 45, -45, -45, 45, -45, 45]}
 
 
+def layup_slug(layup: str) -> str:
+    """The lay-up as it appears in file and run names: "[0/90]2S" -> "0-902S"."""
+    return layup.strip("[]").replace("/", "-").replace("]", "")
+
+
 @dataclass
 class Mesh:
     """The refinement level and grading (all lengths mm). Level L has in-plane size h0 / 2^L

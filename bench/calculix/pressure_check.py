@@ -39,10 +39,6 @@ RESULTS = HERE / "results"
 WORK = HERE / "work" / "pressure"
 
 
-def slug(layup: str) -> str:
-    return layup.strip("[]").replace("/", "-").replace("]", "")
-
-
 def solid_apex(layup: str, level: int, pressure: float, tie: bool) -> dict:
     """The solid cap's apex mid-surface deflection (mm, positive inwards). The reaction printed
     is the clamped nodes' (the loads on those nodes go to the support without it)."""
@@ -52,7 +48,7 @@ def solid_apex(layup: str, level: int, pressure: float, tie: bool) -> dict:
     case = decks.Case(kind="cap", layup=layup, symmetry="quarter", points=[],
                       pressure=pressure, mesh=mesh)
     deck = decks.solid_deck(case)
-    tag = f"pressure_{slug(layup)}_L{level}" + ("_tie" if tie else "")
+    tag = f"pressure_{decks.layup_slug(layup)}_L{level}" + ("_tie" if tie else "")
     cost, work = run_ccx.run_deck(deck.text, deck.info, tag)
     if cost["status"] != "ok":
         raise SystemExit(f"{tag}: ccx {cost['status']}, see {work}/ccx.log")
@@ -77,7 +73,7 @@ def shell_case(layup: str, size: float, pressure: float) -> str:
 
 def shell_apex(exe: str, layup: str, size: float, pressure: float) -> dict:
     WORK.mkdir(parents=True, exist_ok=True)
-    name = f"shell_{slug(layup)}_{size:g}"
+    name = f"shell_{decks.layup_slug(layup)}_{size:g}"
     case = WORK / f"{name}.yaml"
     case.write_text(shell_case(layup, size, pressure))
     out = WORK / name
@@ -107,12 +103,9 @@ def main(argv=None) -> int:
     rows += [solid_apex(a.layup, int(lv), a.pressure, a.tie) for lv in a.levels.split(",")]
     ref = rows[-1]["apex_w_mm"]
     RESULTS.mkdir(exist_ok=True)
-    name = f"pressure_check_{slug(a.layup)}" + ("_tie" if a.tie else "")
-    with open(RESULTS / f"{name}.csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]) + ["w_over_finest_solid"])
-        w.writeheader()
-        for r in rows:
-            w.writerow({**r, "w_over_finest_solid": r["apex_w_mm"] / ref})
+    name = f"pressure_check_{decks.layup_slug(a.layup)}" + ("_tie" if a.tie else "")
+    run_ccx.write_rows(RESULTS / f"{name}.csv",
+                       [{**r, "w_over_finest_solid": r["apex_w_mm"] / ref} for r in rows])
     for r in rows:
         print(f"{r['model']:28s} apex w {r['apex_w_mm']:.6g} mm  reaction {r['reaction_N']:.6g} N"
               f"  w / finest solid {r['apex_w_mm'] / ref:.4f}")

@@ -170,7 +170,7 @@ def main(argv=None):
     a = p.parse_args(argv)
     case = case_from_args(a)
     tag = a.tag or "{}_{}_{}_{}_L{}".format(
-        a.kind, a.layup.replace("/", "-").strip("[]").replace("]", ""), a.symmetry,
+        a.kind, decks.layup_slug(a.layup), a.symmetry,
         "nl" if a.nlgeom else "lin", a.level)
     t0 = time.time()
     deck = decks.shell_deck(case) if a.kind == "shell" else decks.solid_deck(case)
