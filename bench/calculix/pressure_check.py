@@ -88,19 +88,34 @@ def shell_apex(exe: str, layup: str, size: float, pressure: float) -> dict:
                 reaction_N=float(last.get("reaction_N", "nan")), cpu_s=0.0)
 
 
+def number_list(kind, positive: bool):
+    """An argparse type: comma-separated numbers of `kind`, refused with argparse's message."""
+    def parse(text: str):
+        try:
+            values = [kind(v) for v in text.split(",")]
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"'{text}': comma-separated {kind.__name__}s")
+        if any(v < 0 or (positive and v == 0) for v in values):
+            raise argparse.ArgumentTypeError(f"'{text}': the values must be "
+                                             + ("positive" if positive else "0 or more"))
+        return values
+    return parse
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--build", default="build")
-    p.add_argument("--levels", default="0,1,2")
-    p.add_argument("--sizes", default="1,0.5,0.25")
+    p.add_argument("--levels", type=number_list(int, False), default=[0, 1, 2])
+    p.add_argument("--sizes", type=number_list(float, True), default=[1, 0.5, 0.25])
     p.add_argument("--layup", choices=list(decks.LAYUPS), default="[0]8")
-    p.add_argument("--pressure", type=float, default=0.1, help="MPa on the mid-surface")
+    p.add_argument("--pressure", type=lambda t: number_list(float, True)(t)[0], default=0.1,
+                   help="MPa on the mid-surface")
     p.add_argument("--tie", action="store_true", help="the contact reference's tied meshes")
     a = p.parse_args(argv)
-    rows = [shell_apex(str(Path(a.build) / "shellindent"), a.layup, float(s), a.pressure)
-            for s in a.sizes.split(",")]
-    rows += [solid_apex(a.layup, int(lv), a.pressure, a.tie) for lv in a.levels.split(",")]
+    rows = [shell_apex(str(Path(a.build) / "shellindent"), a.layup, s, a.pressure)
+            for s in a.sizes]
+    rows += [solid_apex(a.layup, lv, a.pressure, a.tie) for lv in a.levels]
     ref = rows[-1]["apex_w_mm"]
     RESULTS.mkdir(exist_ok=True)
     name = f"pressure_check_{decks.layup_slug(a.layup)}" + ("_tie" if a.tie else "")
