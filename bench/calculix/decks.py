@@ -134,6 +134,10 @@ class Case:
     # mid-surface (the shell's load); the indenter is held fixed and has no contact. 0: the
     # indenter's travel is the load.
     pressure: float = 0.0        # MPa on the mid-surface
+    # With pressure > 0 and patch_radius > 0 the face load is instead Hertz's pressure
+    # p0 (1 - r^2/a^2)^0.5 on the plan disc r < a (a = patch_radius, mm), one value per face at
+    # its centroid, p0 such that the whole cap carries `pressure` N (a force, not a pressure).
+    patch_radius: float = 0.0
 
     @property
     def thickness(self) -> float:
@@ -441,20 +445,45 @@ def _pressure_deck(case: Case, parts, bcs, solid, is_top, levels, tie, ne_cap) -
     R = case.sphere_radius
     face_p = case.pressure * (R / (R + case.thickness / 2)) ** 2
     loaded = ogrid.faces_on(solid, is_top)
+    values = [face_p] * len(loaded)
+    if case.patch_radius > 0:
+        loaded, values = _hertz_patch(case, solid, loaded)
     parts += bcs
     parts.append("*STEP, INC=10\n*STATIC, SOLVER=" + case.solver + "\n1., 1.\n"
                  "*BOUNDARY\nNIND, 1, 3, 0.\n*DLOAD\n"
-                 + "\n".join(f"{e + 1}, P{f}, {face_p:.12g}" for e, f in loaded) + "\n"
+                 + "\n".join(f"{e + 1}, P{f}, {v:.12g}" for (e, f), v in zip(loaded, values))
+                 + "\n"
                  + "*NODE PRINT, NSET=NAPEX\nU\n*NODE PRINT, NSET=NAPEXTOP\nU\n"
                  "*NODE PRINT, NSET=NFIX, TOTALS=ONLY\nRF\n*END STEP\n")
     info = dict(kind="cap_pressure", layup=case.layup, symmetry=case.symmetry, travel=0.0,
                 penalty=0.0, nlgeom=False, level=case.mesh.level, h=case.mesh.h,
                 nodes=len(solid.nodes), elements=ne_cap, layers=len(levels) // 2,
                 dofs=3 * len(solid.nodes), tie_radius=tie, pressure=case.pressure,
-                face_pressure=face_p,
+                face_pressure=face_p, patch_radius=case.patch_radius,
                 loaded_faces=len(loaded),
                 factor={"quarter": 4, "half": 2, "full": 1}[case.symmetry])
     return Deck(text="".join(parts), info=info)
+
+
+def _hertz_patch(case: Case, solid, loaded):
+    """The outer faces inside the plan disc r < patch_radius and Hertz's pressure at each face's
+    centroid, scaled so that the whole cap carries case.pressure N: a local load with the
+    contact's own shape and no contact (pressure_check.py --patch)."""
+    a = case.patch_radius
+    faces, shape, area = [], [], []
+    for e, f in loaded:
+        # the outer face's own coordinates: node_xy is the reference surface's plan point, and the
+        # outer face lies (1 + t/(2R)) further out
+        c = solid.nodes[solid.elements[e, ogrid.HEX_FACES[f]]]
+        r2 = float(np.sum(c[:, :2].mean(axis=0) ** 2)) / a ** 2
+        if r2 >= 1.0:
+            continue
+        faces.append((e, f))
+        shape.append((1.0 - r2) ** 0.5)
+        area.append(0.5 * float(np.linalg.norm(np.cross(c[2] - c[0], c[3] - c[1]))))
+    factor = {"quarter": 4, "half": 2, "full": 1}[case.symmetry]
+    p0 = case.pressure / (factor * float(np.dot(shape, area)))
+    return faces, [p0 * v for v in shape]
 
 
 # --------------------------------------------------------------------------------------------
