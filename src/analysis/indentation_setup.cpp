@@ -31,8 +31,15 @@ IndentationOptions options_of(const IndentationCase& c, int threads,
   o.threads = threads;
   // The paper's option (issue #4 item 3); the case file refuses it with nonlinear kinematics.
   o.interpolated_traction = c.contact.traction == ContactTraction::kInterpolated;
-  o.interpolated.fbar = c.contact.fbar;
-  if (c.contact.fbar) o.interpolated.fbar_top = analyze_vam(c.laminate).Fbar_top;
+  if (c.contact.fbar) {
+    const Vector6d fbar_top = analyze_vam(c.laminate).Fbar_top;
+    if (o.interpolated_traction) {
+      o.interpolated.fbar = true;
+      o.interpolated.fbar_top = fbar_top;
+    } else {
+      o.nodal_fbar = fbar_top;
+    }
+  }
   o.local = local_contact_law(c);
   if (c.fixture.type == FixtureType::kAstmD6264Backed && o.local.kind == LocalLawKind::kNone)
     throw_input(

@@ -10,7 +10,9 @@ namespace {
 
 std::unique_ptr<ContactRows> make_rows(const IndentationOptions& o, const ContactRowsSetting& s) {
   if (o.interpolated_traction) return std::make_unique<WeightedGaps>(s, o.interpolated);
-  return std::make_unique<NodalGaps>(s);
+  auto rows = std::make_unique<NodalGaps>(s);
+  if (o.nodal_fbar) rows->set_fbar(*o.nodal_fbar, o.contact_offset);
+  return rows;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // case's contact and path (analysis/indentation_run.cpp).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "contact/local_contact_law.hpp"
@@ -40,6 +41,9 @@ struct IndentationOptions {
   bool interpolated_traction = false;
   InterpolatedContactOptions interpolated;
   LocalContactLaw local;  // local contact in series (none by default)
+  // contact.fbar with the nodal traction (face_thickening.hpp), linear kinematics only: the
+  // section's Fbar+ (VamSection::Fbar_top); with the interpolated traction it is interpolated.fbar.
+  std::optional<Vector6d> nodal_fbar;
   // What the continuation monitors (Problem::monitor_names), in order; none by default (the
   // runs pass the monitor columns of analysis/path_columns.hpp).
   std::vector<StateMonitor> monitors;

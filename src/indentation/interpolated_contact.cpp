@@ -8,6 +8,7 @@
 #include "section/gauss_legendre.hpp"
 #include "shell/director.hpp"
 #include "shell/shape4.hpp"
+#include "shell/strain_matrices.hpp"
 
 namespace si {
 namespace {
@@ -31,29 +32,6 @@ std::vector<QuadraturePoint> element_rule(int n) {
     for (int j = 0; j < n; ++j)
       rule.push_back({g.points[i], g.points[j], g.weights[i] * g.weights[j]});
   return rule;
-}
-
-using StrainMatrix = Eigen::Matrix<double, 6, kShellElementDofs>;
-
-// The element's RM strains at its four nodes as linear maps of its linear-mode dofs, R_a = B_a q
-// (shell_element.hpp: in linear mode the strains are B q exactly), column by column from the
-// unit dofs. A rotation dof is set by one rotate_node call, which the element inverts exactly.
-std::array<StrainMatrix, 4> nodal_strain_matrices(const ShellElement& element,
-                                                  const ElementGeometry& geometry) {
-  std::array<NodeState, 4> reference;
-  for (int a = 0; a < 4; ++a) reference[a] = reference_node_state(geometry.D[a]);
-  std::array<StrainMatrix, 4> B;
-  for (int k = 0; k < kShellElementDofs; ++k) {
-    std::array<NodeState, 4> nodes = reference;
-    const int a = k / kShellNodeDofs, l = k % kShellNodeDofs;
-    if (l < 3)
-      nodes[a].u[l] = 1.0;
-    else
-      rotate_node(nodes[a], l == 3 ? 1.0 : 0.0, l == 4 ? 1.0 : 0.0);
-    const ElementStrains s = element.strains_at_nodes(geometry, nodes, Kinematics::kLinear);
-    for (int b = 0; b < 4; ++b) B[b].col(k) = s.R[b];
-  }
-  return B;
 }
 
 // The contact face at one quadrature point: position, area weight and normal.

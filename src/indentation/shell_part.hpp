@@ -66,6 +66,8 @@ class ShellPart {
   Vector3d curvature(const std::vector<NodeState>& s, int node) const;
   // The relative energy-norm discretisation error of the state (model/recovery_error.hpp).
   double error_estimate(const std::vector<NodeState>& s) const;
+  // The elements that contain mesh node `node`.
+  const std::vector<int>& node_elements(int node) const { return node_elements_[node]; }
   // A quarter of each adjacent element's area, mm^2.
   double tributary_area(int node) const { return tributary_area_[node]; }
 

@@ -259,10 +259,12 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics,
         "kinematics only (paper eqs 72-80); set `kinematics: linear` or use "
         "`traction: nodal`",
         map->where("traction"));
-  if (contact.fbar && contact.traction != ContactTraction::kInterpolated)
+  // On the nodal rows the F-bar term is built from the strains' linear map B (face_thickening.hpp).
+  if (contact.fbar && contact.traction == ContactTraction::kNodal &&
+      kinematics != Kinematics::kLinear)
     throw_input(
-        "the F-bar coupling acts through the interpolated traction; set "
-        "`contact.traction: interpolated` or `fbar: false`",
+        "the F-bar face term of the nodal contact is built for linear kinematics (strains B q); "
+        "set `kinematics: linear` or `fbar: false`",
         map->where("fbar"));
   // The power laws' equation F = k alpha^1.5 has no pivot of its own at the start; with nodal
   // gaps the apex row, closed at first touch, supplies it, but the weighted gaps are all open

@@ -60,9 +60,10 @@ TEST(CaseFileErrors, InterpolatedTractionNeedsLinearKinematics) {
                {"contact.traction", "interpolated", 4, "defined for linear kinematics only"});
 }
 
-TEST(CaseFileErrors, FbarNeedsTheInterpolatedTraction) {
-  expect_error(kHead + "kinematics: linear\ncontact: {fbar: true}\n",
-               {"contact.fbar", "true", 4, "set `contact.traction: interpolated`"});
+// The F-bar face term on the nodal rows is built for linear kinematics (face_thickening.hpp).
+TEST(CaseFileErrors, FbarOnNodalContactNeedsLinearKinematics) {
+  expect_error(kHead + "contact: {fbar: true}\n",
+               {"contact.fbar", "true", 3, "set `kinematics: linear`"});
 }
 
 TEST(CaseFileErrors, PowerLawLocalContactNeedsNodalTraction) {
