@@ -3,25 +3,10 @@
 #include <map>
 
 #include "core/error.hpp"
-#include "shell/shape4.hpp"
+#include "shell/offset_face.hpp"
 #include "shell/strain_matrices.hpp"
 
 namespace si {
-
-namespace {
-
-// |P_xi x P_eta| of the face X + c D at corner a of the element: the nodal rule's area weight.
-double corner_area(const ElementGeometry& g, double c, int a) {
-  const Shape4 L = evaluate_shape4(ShapeSet::kBilinear, kCornerXi[a], kCornerEta[a]);
-  Vector3d P_xi = Vector3d::Zero(), P_eta = Vector3d::Zero();
-  for (int b = 0; b < 4; ++b) {
-    P_xi += L.N_xi[b] * (g.X[b] + c * g.D[b]);
-    P_eta += L.N_eta[b] * (g.X[b] + c * g.D[b]);
-  }
-  return P_xi.cross(P_eta).norm();
-}
-
-}  // namespace
 
 FaceThickening::FaceThickening(const ShellPart& shell, const Vector6d& fbar_top, double offset)
     : shell_(shell), fbar_top_(fbar_top), offset_(offset) {
@@ -40,7 +25,11 @@ DofRow FaceThickening::rise_row(int node) const {
     const ElementDofs dofs = DofMap::element_dofs(nodes);
     for (int a = 0; a < 4; ++a) {
       if (nodes[a] != node) continue;
-      const double area = corner_area(g, offset_, a);
+      // the nodal rule's weight: the contact face's area element at the corner
+      const double area =
+          face_point(g, offset_, evaluate_shape4(ShapeSet::kBilinear, kCornerXi[a], kCornerEta[a]),
+                     1.0)
+              .area;
       weight += area;
       const Eigen::Matrix<double, 1, kShellElementDofs> rise = -area * fbar_top_.transpose() * B[a];
       for (int k = 0; k < kShellElementDofs; ++k) {

@@ -7,6 +7,7 @@
 #include "model/dof_map.hpp"
 #include "section/gauss_legendre.hpp"
 #include "shell/director.hpp"
+#include "shell/offset_face.hpp"
 #include "shell/shape4.hpp"
 #include "shell/strain_matrices.hpp"
 
@@ -32,28 +33,6 @@ std::vector<QuadraturePoint> element_rule(int n) {
     for (int j = 0; j < n; ++j)
       rule.push_back({g.points[i], g.points[j], g.weights[i] * g.weights[j]});
   return rule;
-}
-
-// The contact face at one quadrature point: position, area weight and normal.
-struct FacePoint {
-  Vector3d P;
-  Vector3d normal;
-  double area;  // |P_xi x P_eta| times the rule's weight, mm^2
-};
-
-FacePoint face_point(const ElementGeometry& g, double c, const Shape4& L, double weight) {
-  FacePoint f{Vector3d::Zero(), Vector3d::Zero(), 0};
-  Vector3d P_xi = Vector3d::Zero(), P_eta = Vector3d::Zero();
-  for (int a = 0; a < 4; ++a) {
-    const Vector3d Pa = g.X[a] + c * g.D[a];
-    f.P += L.N[a] * Pa;
-    P_xi += L.N_xi[a] * Pa;
-    P_eta += L.N_eta[a] * Pa;
-    f.normal += L.N[a] * g.D[a];
-  }
-  f.normal.normalize();
-  f.area = P_xi.cross(P_eta).norm() * weight;
-  return f;
 }
 
 }  // namespace
