@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "contact/layer_compliance.hpp"
+#include "contact/reissner_mindlin_compliance.hpp"
 #include "core/constants.hpp"
 #include "io/case_file.hpp"
 #include "section/homogenised_stiffness.hpp"
@@ -33,21 +34,6 @@ using si::kPi;
 
 double hertz_transform(double x) {
   return x < 1e-4 ? 1 - x * x / 10 : 3 * (std::sin(x) - x * std::cos(x)) / (x * x * x);
-}
-
-// k w / p of the Reissner-Mindlin plate for a wave of wavenumber k along phi: the plate's
-// stiffness for (W cos, B sin) amplitudes, [[k.G.k, (G k)^T], [G k, Bk^T D Bk + G]].
-double reissner_mindlin_compliance(const si::VamSection& v, double k, double phi) {
-  const Eigen::Vector2d kk(k * std::cos(phi), k * std::sin(phi));
-  const Eigen::Matrix3d D = v.A_R.block<3, 3>(3, 3);  // rows k11, k12 + k21, k22
-  Eigen::Matrix<double, 3, 2> Bk;
-  Bk << kk[0], 0, kk[1], kk[0], 0, kk[1];
-  Eigen::Matrix3d K;
-  K(0, 0) = kk.dot(v.G * kk);
-  K.block<2, 1>(1, 0) = v.G * kk;
-  K.block<1, 2>(0, 1) = (v.G * kk).transpose();
-  K.block<2, 2>(1, 1) = Bk.transpose() * D * Bk + v.G;
-  return k * K.ldlt().solve(Eigen::Vector3d(1, 0, 0))[0];
 }
 
 }  // namespace
@@ -64,6 +50,7 @@ int main(int argc, char** argv) {
   const double h = c.laminate.thickness();
   const auto layers = si::laminate_layers(c.laminate, -h / 2, h / 2);
   const si::VamSection v = si::analyze_vam(c.laminate);
+  const Eigen::Matrix3d D = v.A_R.block<3, 3>(3, 3);  // rows k11, k12 + k21, k22
   const int directions = 16;
   std::vector<double> ks, h_rm, h_mid;
   double kernel_min = 1e300, kernel_min_k = 0;
@@ -73,7 +60,7 @@ int main(int argc, char** argv) {
     for (int j = 0; j < directions; ++j) {
       const double phi = (j + 0.5) * kPi / directions;
       const si::PlateFaceCompliance exact = si::plate_face_compliance(layers, phi, k);
-      const double shell = reissner_mindlin_compliance(v, k, phi);
+      const double shell = si::reissner_mindlin_compliance(D, v.G, phi, k);
       mid += exact.mid / directions;
       rm += shell / directions;
       if (k * h > 2 && exact.top - shell < kernel_min) {

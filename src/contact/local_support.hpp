@@ -10,6 +10,8 @@ enum class LocalSupport {
   kBondedBase,        // its upper half bonded to a rigid base at the mid-surface
   kFrictionlessBase,  // its upper half on a frictionless rigid base at the mid-surface
   kPlate,             // the whole laminate as a free plate, top face against the mid-plane
+  kShell,             // the whole laminate's face against the shell's own plate, non-local
+                      // (contact/face_influence.hpp)
 };
 
 enum class LocalPlies {

@@ -13,6 +13,13 @@
 //    long waves, where H_top - H_mid -> -c2/x, it is removed exactly; the factor 1/(1 + ...), the
 //    share of bending in a Reissner-Mindlin plate's deflection at that wavelength, hands it back
 //    to the exact solution at short waves, where it is no longer a plate-bending term.
+//  * kShell: the same face against the shell's own Reissner-Mindlin plate instead of the exact
+//    mid-plane, H_loc = H_top - H_RM + (L / x) / (1 + D x^2 / (G h^2))
+//    (reissner_mindlin_compliance.hpp): what the shell lacks at its face, for the non-local
+//    contact of contact/face_influence.hpp. At long waves H_top - H_RM = -L / x + O(x), L twice
+//    the top face's Poisson rise over the thickness average (the rise, and the curvature the
+//    face load makes by reciprocity: what the F-bar rows carry, contact.fbar), removed as for
+//    kPlate, so H_loc -> 0; at short waves H_RM ~ 1 / (k e.G.e) and kappa decays like -1/x.
 // For each, with x = k h (h the stack's thickness) and H(x, phi) + H_i (H_i = 2 (1 - nu_i^2)/E_i
 // of an elastic indenter, 0 for a rigid one),
 //     kappa(x) = <H(x, phi) + H_i>_phi / H_inf - 1,    H_inf = <H_top layer(phi)>_phi + H_i,
@@ -37,7 +44,8 @@ struct SupportSpec {
   LocalSupport support = LocalSupport::kBondedBase;  // not kHalfSpace: no kernel for it
   std::vector<LayerStiffness> layers;                // bottom first
   double indenter_compliance = 0;                    // H_i, 1/MPa
-  Matrix2d shear_stiffness = Matrix2d::Zero();       // kPlate: the section's G, N/mm, [13, 23]
+  Matrix2d shear_stiffness = Matrix2d::Zero();       // kPlate, kShell: the section's G, N/mm
+  Matrix3d bending_stiffness = Matrix3d::Zero();     // kShell: its D, N mm (H_RM)
 };
 
 // The composite Gauss-Legendre rule on [0, x_max] the kernel's integrals use, with kappa there.
@@ -52,6 +60,8 @@ class SupportKernel {
   // stack, kHalfSpace, or kPlate without a positive-definite shear stiffness.
   SupportKernel(const SupportSpec& spec, double y_max, int directions = 8);
 
+  const SupportSpec& spec() const { return spec_; }
+  int directions() const { return directions_; }
   double thickness() const { return thickness_; }
   double far_compliance() const { return far_compliance_; }
   double kappa(double x) const;
@@ -62,11 +72,12 @@ class SupportKernel {
   KernelQuadrature quadrature(double x_max, double panel) const;
 
  private:
-  double mean_compliance(double x) const;  // <H(x, phi) + H_i>_phi
+  double mean_compliance(double x) const;    // <H(x, phi) + H_i>_phi
+  double shell_long_wave(double phi) const;  // kShell: L of H_top - H_RM = -L / x + O(x)
   SupportSpec spec_;
   int directions_;
   double thickness_ = 0, far_compliance_ = 0;
-  std::vector<double> poisson_c2_, bending_ratio_;  // kPlate, per direction: c2, D / (G h^2)
+  std::vector<double> poisson_c2_, bending_ratio_;  // per direction: c2 (kShell: L), D / (G h^2)
   ChebyshevSeries kappa_;                           // in xi
   // K(y) at y_j = j dy with K'(y_j), from its Chebyshev series, for cubic Hermite interpolation
   // (the contact solutions evaluate K ~1e5 times: Clenshaw's 160 terms would dominate).

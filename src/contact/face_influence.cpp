@@ -1,0 +1,56 @@
+#include "contact/face_influence.hpp"
+
+#include <cmath>
+
+#include "core/constants.hpp"
+#include "core/error.hpp"
+
+namespace si {
+
+KappaTail shell_kappa_tail(const SupportKernel& kernel, const Matrix2d& shear_stiffness,
+                           int directions) {
+  // H_RM -> 1 / (k e.G.e) at short waves (reissner_mindlin_compliance.hpp), averaged as the
+  // kernel averages: kappa -> -(h / x) <1 / e.G.e> / H_inf.
+  double mean = 0;
+  for (int j = 0; j < directions; ++j) {
+    const double phi = kPi * j / directions;
+    const Vector2d e(std::cos(phi), std::sin(phi));
+    mean += 1 / e.dot(shear_stiffness * e) / directions;
+  }
+  KappaTail t;
+  t.t1 = -kernel.thickness() * mean / kernel.far_compliance();
+  const double x = 2000;
+  t.t3 = x * x * x * (kernel.kappa_direct(x) - t.t1 / x);
+  return t;
+}
+
+namespace {
+
+HankelJ0 kappa_transform(const SupportKernel& kernel, const KappaTail& tail, double rho_max) {
+  return HankelJ0([&kernel](double x) { return kernel.kappa(x); }, tail.t1, tail.t3, rho_max);
+}
+
+}  // namespace
+
+FaceInfluence::FaceInfluence(std::shared_ptr<const SupportKernel> kernel, double r_max)
+    : kernel_(std::move(kernel)),
+      h_(kernel_->thickness()),
+      far_(kernel_->far_compliance()),
+      transform_(kappa_transform(
+          *kernel_,
+          shell_kappa_tail(*kernel_, kernel_->spec().shear_stiffness, kernel_->directions()),
+          r_max / h_)) {
+  SI_REQUIRE(kernel_->spec().support == LocalSupport::kShell,
+             "FaceInfluence: the kernel must be of the shell support");
+}
+
+double FaceInfluence::point(double r) const {
+  return far_ / (2 * kPi) * (1 / r + transform_(r / h_) / h_);
+}
+
+double FaceInfluence::disc(double b) const {
+  SI_REQUIRE(b > 0, "FaceInfluence::disc: the radius must be positive");
+  return far_ / (kPi * b * b) * (b + h_ * transform_.moment(b / h_));
+}
+
+}  // namespace si
