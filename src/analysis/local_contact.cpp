@@ -29,7 +29,7 @@ LocalContactLaw local_contact_law(const IndentationCase& c) {
     if (!(compliance > 0))
       throw_input("the section's face compliance c_L++ (local law vam) is not positive",
                   Where{c.file, "contact.local", "", 0});
-    return {LocalLawKind::kThinLayer, 0.0, compliance, 0.0, nullptr};
+    return {LocalLawKind::kThinLayer, 0.0, compliance, 0.0, nullptr, nullptr};
   }
   // The case-file reader refuses other shapes, naming the key (io/case_file.cpp).
   SI_REQUIRE(c.indenter.shape == IndenterShape::kSphere,

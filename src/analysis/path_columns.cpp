@@ -111,13 +111,15 @@ std::vector<ColumnSpec> make_columns() {
       {PathColumn::kLocalIndent, "local_indent_mm", "mm",
        "the local (through-thickness) approach of the indenter towards the contact face at the "
        "apex (`contact.local`; 0 for `none`): alpha of `hertz`/`yang_sun`, c_L++ p at the apex "
-       "node for `vam`. With the apex in contact, depth_mm = apex face deflection + "
+       "node for `vam`, sum_j C_apex,j lambda_j of the elastic face (`local_support: shell`). "
+       "With the apex in contact, depth_mm = apex face deflection + "
        "local_indent_mm (docs/theory/local-indentation.md)",
        [](const S& s) { return s.local_indentation; }, nullptr,
        [](PathPoint& p, double v) { p.state.local_indentation = v; }},
       {PathColumn::kLocalEnergy, "local_energy_Nmm", "N mm",
        "energy of the local law: (2/5) k alpha^2.5 for `hertz`/`yang_sun`, sum of c_L lambda_i^2 "
-       "/ (2 A_i) for `vam`; work_Nmm = energy_Nmm + local_energy_Nmm to the integration error "
+       "/ (2 A_i) for `vam`, 1/2 lambda^T C lambda for the elastic face; work_Nmm = energy_Nmm + "
+       "local_energy_Nmm to the integration error "
        "(power laws: see work_Nmm)",
        [](const S& s) { return s.local_energy; }, nullptr,
        [](PathPoint& p, double v) { p.state.local_energy = v; }},

@@ -8,8 +8,11 @@
 //  * kPlate: the whole laminate as a free plate, the face's approach to the mid-plane without the
 //    Poisson thickness change of plate bending (the shell's transverse shear stiffness from the
 //    VAM section, section/vam_section.hpp, sets where that term fades);
-// the last three tabulated over the contact radius (layer_contact_law.hpp). The indenter's own
-// half-space compliance 2 (1 - nu_i^2) / E_i (0: rigid) adds to the face's.
+// the last three tabulated over the contact radius (layer_contact_law.hpp);
+//  * kShell: the whole laminate's face against the shell's own plate, non-local
+//    (face_influence.hpp), its plies always resolved: the kernel is the difference of two plates
+//    of the same laminate, and a homogenised one would not be the shell's.
+// The indenter's own half-space compliance 2 (1 - nu_i^2) / E_i (0: rigid) adds to the face's.
 #pragma once
 
 #include "contact/local_contact_law.hpp"

@@ -60,8 +60,12 @@ double hertz_modulus(double indenter_E, double indenter_nu, double shell_E, doub
 
 LocalContactLaw hertz_law(double sphere_radius, double modulus) {
   SI_REQUIRE(sphere_radius > 0 && modulus > 0, "hertz_law: radius and modulus must be positive");
-  return {LocalLawKind::kPowerLaw, 4.0 / 3.0 * modulus * std::sqrt(sphere_radius), 0.0,
-          sphere_radius, nullptr};
+  return {LocalLawKind::kPowerLaw,
+          4.0 / 3.0 * modulus * std::sqrt(sphere_radius),
+          0.0,
+          sphere_radius,
+          nullptr,
+          nullptr};
 }
 
 LocalContactLaw layer_law(std::shared_ptr<const LayerContactLaw> law) {
@@ -77,7 +81,7 @@ LocalContactLaw yang_sun_law(double sphere_radius, double indenter_E, double ind
              "yang_sun_law: radius and transverse modulus must be positive");
   const double k = 4.0 / 3.0 * std::sqrt(sphere_radius) /
                    (indenter_compliance(indenter_E, indenter_nu) + 1 / transverse_E);
-  return {LocalLawKind::kPowerLaw, k, 0.0, sphere_radius, nullptr};
+  return {LocalLawKind::kPowerLaw, k, 0.0, sphere_radius, nullptr, nullptr};
 }
 
 }  // namespace si

@@ -12,6 +12,9 @@
 //    is Hertz's at small alpha and stiffens as the contact radius grows against the thickness.
 //  * kThinLayer: a per-node approach c p_i, p_i the node's contact pressure and c the section's
 //    face compliance c_L++ (vam.md 7.3-7.4): linear, local to each node.
+//  * kElasticFace: the face's approach at each node under every node's force, sum_j C_ij f_j,
+//    from the laminate's 3-D solution less the shell's own plate (face_influence.hpp): linear,
+//    non-local; no dent profile and no alpha (the influence coefficients are the dent).
 // Units: mm, N, MPa.
 #pragma once
 
@@ -23,7 +26,7 @@
 
 namespace si {
 
-enum class LocalLawKind { kNone, kPowerLaw, kThinLayer };
+enum class LocalLawKind { kNone, kPowerLaw, kThinLayer, kElasticFace };
 
 // A power law's dent at one approach alpha, for the many r of one Newton iterate (a
 // finite-thickness law's per-alpha work, its contact radius and table slice, done once).
@@ -44,6 +47,9 @@ struct LocalContactLaw {
   // kPowerLaw of finite thickness: the tabulated law; k and radius are then its small-alpha Hertz
   // form (4/3) M R^0.5 and R (for reports).
   std::shared_ptr<const LayerContactLaw> layer;
+  // kElasticFace: the face's kernel (support kShell), from which the problem builds the
+  // influence coefficients between its candidates (face_influence.hpp).
+  std::shared_ptr<const SupportKernel> face;
 
   // kPowerLaw. F(alpha) = k sgn(alpha) |alpha|^1.5: the odd extension keeps Newton iterates with
   // alpha < 0 defined (a solution has alpha >= 0 since F >= 0). F is C^1 with F'(0) = 0.

@@ -34,8 +34,8 @@ double ContactRows::face_depth(int node, const cont::Vector& z, double h) const 
   return h - approach_->dent(node, z).u;
 }
 
-double ContactRows::contact_gap(int i, const TermPoint& p, double depth, double lambda) const {
-  return gap_value(i, p, depth) + approach_->layer(candidates_[i], lambda);
+double ContactRows::contact_gap(int i, const TermPoint& p, double depth) const {
+  return gap_value(i, p, depth) + layer_at(i, p);
 }
 
 // The first-touch node's gap at the start is zero only to the travel's roundoff (s(p) is a
@@ -56,7 +56,7 @@ NcpValue ContactRows::complementarity(double lambda, double gap) const {
 }
 
 double ContactRows::multiplier_diagonal(int i, const NcpValue& phi) const {
-  return phi.d_a + phi.d_b * kappa() * approach_->layer(candidates_[i], 1.0);
+  return phi.d_a + phi.d_b * kappa() * approach_->layer_rate(candidates_[i]);
 }
 
 void ContactRows::add_multiplier_terms(int i, const NcpValue& phi, double dent_rate,
@@ -70,7 +70,7 @@ void ContactRows::residual(const TermPoint& p, cont::Vector& F) {
   for (int i = 0; i < size(); ++i) {
     const double lambda = p.z[first() + i];
     const double depth = face_depth(candidates_[i], p.z, p.h);
-    F[first() + i] = complementarity(lambda, contact_gap(i, p, depth, lambda)).value;
+    F[first() + i] = complementarity(lambda, contact_gap(i, p, depth)).value;
   }
 }
 
@@ -80,7 +80,7 @@ void ContactRows::residual_p(const TermPoint& p, cont::Vector& out) {
     const double lambda = p.z[first() + i];
     const double depth = face_depth(candidates_[i], p.z, p.h);
     if (!hits(i, p, depth)) continue;
-    const NcpValue phi = complementarity(lambda, contact_gap(i, p, depth, lambda));
+    const NcpValue phi = complementarity(lambda, contact_gap(i, p, depth));
     out[first() + i] = -phi.d_b * kappa();
   }
 }
@@ -89,7 +89,7 @@ void ContactRows::signature(const TermPoint& p, std::vector<int>& out) const {
   for (int i = 0; i < size(); ++i) {
     const double lambda = p.z[first() + i];
     const double depth = face_depth(candidates_[i], p.z, p.h);
-    out.push_back(lambda > kappa() * contact_gap(i, p, depth, lambda));
+    out.push_back(lambda > kappa() * contact_gap(i, p, depth));
   }
 }
 
@@ -183,7 +183,7 @@ void ContactRows::outputs(const TermPoint& p, IndentationState& out) const {
     const double l = p.z[first() + i];
     const double depth = face_depth(n, p.z, p.h);
     const bool on_path = hits(i, p, depth);
-    const double g = contact_gap(i, p, depth, l);
+    const double g = contact_gap(i, p, depth);
     out.nodes.push_back(n);
     out.multipliers.push_back(l);
     out.gaps.push_back(on_path ? g : std::numeric_limits<double>::infinity());
@@ -200,12 +200,6 @@ Eigen::VectorXd ContactRows::reference_gaps(const TermPoint& reference) const {
   Eigen::VectorXd g0(candidates_.size());
   for (int i = 0; i < size(); ++i) g0[i] = gap_value(i, reference, 0.0);
   return g0;
-}
-
-Eigen::VectorXd ContactRows::layer_compliances() const {
-  Eigen::VectorXd c(candidates_.size());
-  for (int i = 0; i < size(); ++i) c[i] = approach_->layer(candidates_[i], 1.0);
-  return c;
 }
 
 }  // namespace si

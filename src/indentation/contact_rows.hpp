@@ -61,10 +61,15 @@ class ContactRows : public ContactTerm {
 
   // Linear kinematics (the fast path, linear_indentation.hpp): the gap gradients at the
   // reference state (one row per candidate, free-dof columns), the gaps at h = 0 of the
-  // undeformed shell (g = g0 - h + C x), and each candidate's local compliance c_i (mm/N).
+  // undeformed shell (g = g0 - h + C x), and the local law's column j of d layer / d lambda
+  // added to `column` (mm/N).
   virtual SparseMatrix gap_matrix(const TermPoint& reference) const = 0;
   Eigen::VectorXd reference_gaps(const TermPoint& reference) const;
-  Eigen::VectorXd layer_compliances() const;
+  void add_compliance_column(int j, Eigen::VectorXd& column) const {
+    approach_->add_compliance_column(candidates_, j, column);
+  }
+  // Whether the Newton paths can carry the local law (LocalApproach::local_to_rows).
+  bool local_law_local_to_rows() const { return approach_->local_to_rows(); }
   // lambda_i over this is candidate i's contact pressure, MPa (the state's `pressures`).
   double pressure_area_of(int i) const { return pressure_area(i); }
 
@@ -84,13 +89,16 @@ class ContactRows : public ContactTerm {
   // After the candidate set changed; `appended`: the old candidates are its head.
   virtual void candidates_changed(bool appended) = 0;
 
-  // The local law at mesh node `node`: the dent (u, du/dalpha) and the layer's approach.
+  // The local law at mesh node `node`: the dent (u, du/dalpha); at candidate i the layer's
+  // approach under the multipliers of p.
   DentValue dent_at(int node, const cont::Vector& z) const { return approach_->dent(node, z); }
-  double layer_at(int node, double lambda) const { return approach_->layer(node, lambda); }
+  double layer_at(int i, const TermPoint& p) const {
+    return approach_->layer(candidates_, i, multipliers(p.z));
+  }
   // The depth of the indenter into the contact face at mesh node `node`: h - u(r_node; alpha).
   double face_depth(int node, const cont::Vector& z, double h) const;
-  // The gap candidate i's row sees: its gap plus the local layer's approach c_i lambda_i.
-  double contact_gap(int i, const TermPoint& p, double depth, double lambda) const;
+  // The gap candidate i's row sees: its gap plus the local layer's approach.
+  double contact_gap(int i, const TermPoint& p, double depth) const;
   NcpValue complementarity(double lambda, double gap) const;
   // d phi_i / d lambda_i: phi_a, plus the thin layer's share through the gap.
   double multiplier_diagonal(int i, const NcpValue& phi) const;

@@ -1,5 +1,6 @@
 #include "indentation/contact_terms.hpp"
 
+#include "indentation/elastic_face.hpp"
 #include "indentation/nodal_gaps.hpp"
 #include "indentation/power_law_approach.hpp"
 #include "indentation/thin_layer.hpp"
@@ -39,6 +40,11 @@ ContactParts make_contact_parts(const IndentationOptions& options,
     auto layer = std::make_unique<ThinLayer>(options.local.compliance, setting.shell, *rows);
     rows->set_approach(*layer);
     law = std::move(layer);
+  } else if (options.local.kind == LocalLawKind::kElasticFace) {
+    auto face =
+        std::make_unique<ElasticFace>(options.local.face, setting.shell, setting.body, *rows);
+    rows->set_approach(*face);
+    law = std::move(face);
   }
   rows->set_candidates(setting.body.reachable());
   parts.terms.push_back(std::move(rows));

@@ -329,8 +329,12 @@ Eigen::VectorXd IndentationProblem::reference_gaps() const {
   return contact_->reference_gaps(TermPoint{z0, 0.0, s});
 }
 
-Eigen::VectorXd IndentationProblem::layer_compliances() const {
-  return contact_->layer_compliances();
+void IndentationProblem::add_local_compliance_column(int j, Eigen::VectorXd& column) const {
+  contact_->add_compliance_column(j, column);
+}
+
+bool IndentationProblem::local_law_local_to_rows() const {
+  return contact_->local_law_local_to_rows();
 }
 
 IndentationCounters IndentationProblem::counters() const {

@@ -129,10 +129,13 @@ class IndentationProblem : public cont::Problem {
   const SparseMatrix& linear_tangent() const { return shell_.reference_tangent(); }
   SparseMatrix contact_matrix() const;
   Eigen::VectorXd reference_gaps() const;
-  // Thin-layer local law: each candidate's local compliance c_L / A_i, mm/N (zeros otherwise);
-  // the fast path adds it to the diagonal of the Schur complement. A power-law local law is
+  // A linear local law's column j of the face's compliance over the candidates, added to
+  // `column` (mm/N): c_L / A_j on the diagonal for the thin layer, the influence coefficients of
+  // the elastic face; the fast path adds it to the Schur complement. A power-law local law is
   // nonlinear: the fast path refuses it (run_indentation_path routes it to the continuation).
-  Eigen::VectorXd layer_compliances() const;
+  void add_local_compliance_column(int j, Eigen::VectorXd& column) const;
+  // Whether the Newton paths carry the local law (not the elastic face: the fast path only).
+  bool local_law_local_to_rows() const;
   IndentationState evaluate(const cont::Vector& z, double h);
   // What else the state carries from the displacement field (the failure indices of a run that
   // monitors damage, analysis/damage_probe.hpp), from now on; none by default. Set it before the

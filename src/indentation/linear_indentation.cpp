@@ -20,8 +20,6 @@ LinearIndentation::LinearIndentation(const IndentationProblem& problem)
   C_ = problem.contact_matrix();
   Ct_ = C_.transpose();
   g0_ = problem.reference_gaps();
-  // Thin-layer local law (vam): each gap gains c_L++ lambda_i / A_i.
-  layer_ = problem.layer_compliances();
   columns_.resize(num_candidates());
   lambda_ = Eigen::VectorXd::Zero(num_candidates());
 }
@@ -32,7 +30,8 @@ const Eigen::VectorXd& LinearIndentation::column(int j) {
   Eigen::VectorXd& c = columns_[j];
   if (c.size() == 0) {
     c = C_ * solver_->solve(Eigen::VectorXd(Ct_.col(j)));
-    c[j] += layer_[j];
+    // A linear local law's share: c_L++ / A_j (vam) or the elastic face's coefficients.
+    problem_.add_local_compliance_column(j, c);
   }
   return c;
 }

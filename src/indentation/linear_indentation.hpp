@@ -43,7 +43,6 @@ class LinearIndentation {
   std::unique_ptr<LinearSolver> solver_;
   SparseMatrix C_;
   SparseMatrix Ct_;
-  Eigen::VectorXd layer_;                 // the thin-layer law's diagonal of S (vam), mm/N
   std::vector<Eigen::VectorXd> columns_;  // S's columns computed so far (empty: not yet)
   Eigen::VectorXd g0_;
   Eigen::VectorXd lambda_;  // warm start

@@ -1,9 +1,12 @@
 // The local (through-thickness) approach of the indenter towards the shell's contact face, as
 // the contact rows see it (contact/local_contact_law.hpp, docs/theory/local-indentation.md):
 // candidate i's gap is taken at its face depth h - u_i(alpha), the face dented by a power law's
-// Hertz profile (power_law_approach.hpp), and gains c_i lambda_i, a thin layer's compliance
-// (thin_layer.hpp). Without a local law (the default here) neither.
+// Hertz profile (power_law_approach.hpp), and gains the face's approach under the multipliers:
+// c_i lambda_i of a thin layer (thin_layer.hpp), or sum_j C_ij lambda_j of the elastic face
+// (elastic_face.hpp). Without a local law (the default here) neither.
 #pragma once
+
+#include <vector>
 
 #include "contact/hertz_dent.hpp"
 #include "continuation/problem.hpp"
@@ -15,8 +18,23 @@ class LocalApproach {
   virtual ~LocalApproach() = default;
   // The dent of the face at mesh node `node` and its rate d/dalpha.
   virtual DentValue dent(int, const cont::Vector&) const { return {}; }
-  // The approach at mesh node `node` carried by the multiplier `lambda` (N), mm.
-  virtual double layer(int, double) const { return 0.0; }
+  // The approach at candidate i (mesh node nodes[i]) carried by the candidates' multipliers
+  // `lambda` (N), mm.
+  virtual double layer(const std::vector<int>& /*nodes*/, int /*i*/,
+                       const Eigen::Ref<const cont::Vector>& /*lambda*/) const {
+    return 0.0;
+  }
+  // d layer_i / d lambda_i at mesh node `node`, mm/N: the Newton rows' diagonal share.
+  virtual double layer_rate(int /*node*/) const { return 0.0; }
+  // Column j of d layer / d lambda over the candidates `nodes` added to `column`, mm/N (the
+  // linear fast path's share of the Schur complement).
+  virtual void add_compliance_column(const std::vector<int>& nodes, int j,
+                                     Eigen::VectorXd& column) const {
+    column[j] += layer_rate(nodes[j]);
+  }
+  // Whether layer_rate is all of the coupling (the Newton paths' rows carry no other); a
+  // non-local face couples every pair of candidates and is solved by the linear fast path only.
+  virtual bool local_to_rows() const { return true; }
   // The position of alpha in z (the dent's column in the contact rows), -1 without one.
   virtual int alpha_index() const { return -1; }
   // A power law's start is regular only at the kink of the NCP function: a gap within

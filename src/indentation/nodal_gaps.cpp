@@ -107,7 +107,7 @@ void NodalGaps::add_jacobian(const TermPoint& p, double* J,
     const double lambda = p.z[first() + i];
     const DentValue dent = dent_at(candidates_[i], p.z);
     const NodeGap g = gap(i, p, p.h - dent.u, nonlinear && lambda != 0.0);
-    const NcpValue phi = complementarity(lambda, g.gap + layer_at(candidates_[i], lambda));
+    const NcpValue phi = complementarity(lambda, g.gap + layer_at(i, p));
     const Slots& s = slots_[i];
     const double b = phi.d_b * kappa();
     if (condensed) condensed->push_back(condensed_node_row(s, g, multiplier_diagonal(i, phi), b));

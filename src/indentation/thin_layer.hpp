@@ -26,7 +26,9 @@ class ThinLayer final : public ContactTerm, public LocalApproach {
   // The approach at the apex node and the energy sum_i 1/2 c_L lambda_i^2 / A_i (whole shell).
   void outputs(const TermPoint& p, IndentationState& out) const override;
 
-  double layer(int node, double lambda) const override;
+  double layer(const std::vector<int>& nodes, int i,
+               const Eigen::Ref<const cont::Vector>& lambda) const override;
+  double layer_rate(int node) const override;
 
  private:
   double compliance_;

@@ -64,7 +64,7 @@ void WeightedGaps::add_jacobian(const TermPoint& p, double* J, std::vector<Conta
   for (int k = 0; k < size(); ++k) {
     const double lambda = p.z[first() + k];
     const DentValue dent = dent_at(candidates_[k], p.z);
-    const NcpValue phi = complementarity(lambda, contact_gap(k, p, p.h - dent.u, lambda));
+    const NcpValue phi = complementarity(lambda, contact_gap(k, p, p.h - dent.u));
     for (int e = C_.outerIndexPtr()[k]; e < C_.outerIndexPtr()[k + 1]; ++e) {
       J[column_[e]] -= C_.valuePtr()[e];
       J[row_[e]] += phi.d_b * kappa() * C_.valuePtr()[e];

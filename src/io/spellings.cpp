@@ -15,7 +15,8 @@ const Choices<LocalSupport>& local_support_spellings() {
   static const Choices<LocalSupport> c{{"half_space", LocalSupport::kHalfSpace},
                                        {"bonded", LocalSupport::kBondedBase},
                                        {"frictionless", LocalSupport::kFrictionlessBase},
-                                       {"plate", LocalSupport::kPlate}};
+                                       {"plate", LocalSupport::kPlate},
+                                       {"shell", LocalSupport::kShell}};
   return c;
 }
 

@@ -127,7 +127,7 @@ IndentationOptions with_local(const LocalContactLaw& law,
   return o;
 }
 const LocalContactLaw kHertz = hertz_law(12.7, 10000.0);
-const LocalContactLaw kThinLayer{LocalLawKind::kThinLayer, 0.0, 1e-4, 0.0, nullptr};
+const LocalContactLaw kThinLayer{LocalLawKind::kThinLayer, 0.0, 1e-4, 0.0, nullptr, nullptr};
 
 TEST(IndentationProblem, HertzLocalLaw_NonlinearJacobianMatchesFiniteDifferences) {
   IndentationFixture f(coarse_cap_case("nonlinear", "[0/90]2S", "quarter"),

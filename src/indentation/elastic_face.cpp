@@ -1,0 +1,93 @@
+#include "indentation/elastic_face.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "core/constants.hpp"
+#include "core/error.hpp"
+
+namespace si {
+
+ElasticFace::ElasticFace(std::shared_ptr<const SupportKernel> kernel, const ShellPart& shell,
+                         const ContactBody& body, const ContactRows& rows)
+    : shell_(shell), body_(body), rows_(rows) {
+  const ShellModel& model = shell.model();
+  for (const Support& s : model.supports)
+    if (s.kind == SupportKind::kSymmetryPlane) {
+      const std::vector<int>& set = model.mesh.node_sets.at(s.node_set);
+      SI_REQUIRE(!set.empty(), "ElasticFace: an empty symmetry plane");
+      mirrors_.push_back({s.plane_axis, model.mesh.nodes[set.front()][s.plane_axis]});
+    }
+  // The diagonal of the box of the reachable face points and their images bounds every distance
+  // asked; the largest disc (four coincident images) too.
+  Eigen::AlignedBox3d box;
+  double r_max = 0;
+  for (int a : body.reachable()) {
+    r_max = std::max(r_max, std::sqrt(4 * shell.tributary_area(a) / kPi));
+    for (const Vector3d& image : images(body.face_points()[a])) box.extend(image);
+  }
+  if (!box.isEmpty()) r_max = std::max(r_max, box.diagonal().norm());
+  influence_ = std::make_unique<FaceInfluence>(std::move(kernel), 1.01 * r_max + 1e-9);
+}
+
+std::vector<Vector3d> ElasticFace::images(const Vector3d& x) const {
+  std::vector<Vector3d> out{x};
+  for (const Mirror& m : mirrors_) {
+    const std::size_t n = out.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      Vector3d y = out[i];
+      y[m.axis] = 2 * m.at - y[m.axis];
+      out.push_back(y);
+    }
+  }
+  return out;
+}
+
+double ElasticFace::coefficient(int a, int b) const {
+  const std::vector<Vector3d>& x = body_.face_points();
+  // Images closer than this to x_a are x_a itself: the node's own disc, which the coincident
+  // images share (a node on a symmetry plane carries half its physical force and area).
+  const double own = 1e-9 * (1 + x[a].norm());
+  double c = 0;
+  int coincident = 0;
+  for (const Vector3d& image : images(x[b])) {
+    const double r = (x[a] - image).norm();
+    if (r <= own)
+      ++coincident;
+    else
+      c += influence_->point(r);
+  }
+  if (coincident > 0) {
+    const double radius = std::sqrt(coincident * shell_.tributary_area(a) / kPi);
+    c += coincident * influence_->disc(radius);
+  }
+  return c;
+}
+
+double ElasticFace::layer(const std::vector<int>& nodes, int i,
+                          const Eigen::Ref<const cont::Vector>& lambda) const {
+  double u = 0;
+  for (int j = 0; j < static_cast<int>(nodes.size()); ++j)
+    if (lambda[j] != 0) u += coefficient(nodes[i], nodes[j]) * lambda[j];
+  return u;
+}
+
+void ElasticFace::add_compliance_column(const std::vector<int>& nodes, int j,
+                                        Eigen::VectorXd& column) const {
+  for (int i = 0; i < static_cast<int>(nodes.size()); ++i)
+    column[i] += coefficient(nodes[i], nodes[j]);
+}
+
+void ElasticFace::outputs(const TermPoint& p, IndentationState& out) const {
+  const ShellModel& model = shell_.model();
+  const std::vector<int>& nodes = rows_.candidates();
+  const cont::Vector lambda = rows_.multipliers(p.z);
+  for (int i = 0; i < rows_.size(); ++i) {
+    if (lambda[i] == 0 && nodes[i] != model.apex_node()) continue;
+    const double approach = layer(nodes, i, lambda);
+    out.local_energy += model.symmetry_factor * 0.5 * lambda[i] * approach;
+    if (nodes[i] == model.apex_node()) out.local_indentation = approach;
+  }
+}
+
+}  // namespace si

@@ -1,0 +1,65 @@
+// The elastic face (`local_support: shell`, contact/face_influence.hpp) as a part of the
+// indentation problem: candidate i's gap gains the face's approach sum_j C_ij lambda_j, with
+// C_ij the influence coefficient between the reference face points of nodes i and j, summed over
+// the mirror images of j in the model's symmetry planes (a quarter model's multiplier stands for
+// the same force at each image), and a node on itself (or on an image of itself) the centre of
+// a disc of its physical tributary area. C is symmetric; with the shell's compliance it is the
+// face's, positive definite.
+//
+// Linear in the multipliers with no unknown of its own: the linear fast path adds C's columns to
+// the Schur complement (linear_indentation.hpp). Every pair of candidates is coupled, which the
+// Newton paths' rows (one node each) do not carry: nonlinear kinematics and support frames are
+// refused (local_to_rows() false; io/case_file.cpp and run_indentation_path).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "contact/face_influence.hpp"
+#include "indentation/contact_body.hpp"
+#include "indentation/contact_rows.hpp"
+#include "indentation/local_approach.hpp"
+
+namespace si {
+
+class ElasticFace final : public ContactTerm, public LocalApproach {
+ public:
+  // The influence table reaches the largest distance between the body's reachable nodes and
+  // their images. Keeps references to the shell, the body and the rows.
+  ElasticFace(std::shared_ptr<const SupportKernel> kernel, const ShellPart& shell,
+              const ContactBody& body, const ContactRows& rows);
+
+  int size() const override { return 0; }
+  void add_pattern(Triplets&) const override {}
+  void locate(const SparseMatrix&) override {}
+  void residual(const TermPoint&, cont::Vector&) override {}
+  void add_jacobian(const TermPoint&, double*, std::vector<ContactJacobianRow>*) override {}
+  // The approach at the apex node and the energy 1/2 lambda^T C lambda (whole shell).
+  void outputs(const TermPoint& p, IndentationState& out) const override;
+
+  double layer(const std::vector<int>& nodes, int i,
+               const Eigen::Ref<const cont::Vector>& lambda) const override;
+  double layer_rate(int node) const override { return coefficient(node, node); }
+  void add_compliance_column(const std::vector<int>& nodes, int j,
+                             Eigen::VectorXd& column) const override;
+  bool local_to_rows() const override { return false; }
+
+  // C between mesh nodes a and b, mm/N.
+  double coefficient(int a, int b) const;
+
+ private:
+  struct Mirror {
+    int axis = 0;
+    double at = 0;  // the plane x_axis = at
+  };
+  // The images of point x in the symmetry planes, x itself first.
+  std::vector<Vector3d> images(const Vector3d& x) const;
+
+  const ShellPart& shell_;
+  const ContactBody& body_;
+  const ContactRows& rows_;
+  std::vector<Mirror> mirrors_;
+  std::unique_ptr<FaceInfluence> influence_;
+};
+
+}  // namespace si

@@ -1,0 +1,131 @@
+// The elastic face (`contact.local: anisotropic` with `local_support: shell`;
+// indentation/elastic_face.hpp, docs/theory/local-indentation.md 6.10) in the indentation problem:
+//  * the quarter plate reports the whole plate: the mirror images of a quarter model's forces
+//    (and a node's own disc on the symmetry planes) reproduce the full model's influence
+//    coefficients, a different sum over different nodes;
+//  * energy: the linear fast path solves the QP min 1/2 lambda^T S lambda + (g0 - h)^T lambda,
+//    S = C K^-1 C^T + C_face, whose optimal value's derivative in h is -F (the envelope theorem),
+//    so W = int F dh = 1/2 lambda^T S lambda = U + E_local at every depth: the trapezoidal work
+//    over a refined grid converges to the reported U + E_local at second order;
+//  * input errors: nonlinear kinematics and homogenised plies, naming the key and its line.
+// Its agreement with a resolved 3-D model is measured against CalculiX (bench/calculix,
+// docs/verification.md section 7), not here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "../indentation/indentation_test_support.hpp"
+#include "../verification_record.hpp"
+#include "analysis/local_contact.hpp"
+#include "core/error.hpp"
+#include "indentation/linear_indentation.hpp"
+#include "io/case_file.hpp"
+
+namespace si {
+namespace {
+
+using testing::IndentationFixture;
+using testing::isotropic_indentation_case;
+
+const char* const kTable = "local-indentation";
+const char* const kPlateShell = "{type: flat_circular_plate, radius: 25 mm, edge: clamped}";
+
+IndentationFixture elastic_face_plate(const std::string& symmetry, double size_apex) {
+  CaseFile c = isotropic_indentation_case(
+      3.8, kPlateShell,
+      "{size_apex: " + std::to_string(size_apex) +
+          " mm, size_edge: 4 mm, refine_radius: 6 mm, symmetry: " + symmetry + "}",
+      "linear", 12.7, "outer");
+  c.contact.local = LocalContactModel::kAnisotropic;
+  c.contact.local_support = LocalSupport::kShell;
+  IndentationOptions o;
+  o.local = local_contact_law(c);
+  EXPECT_EQ(o.local.kind, LocalLawKind::kElasticFace);
+  return IndentationFixture(c, o);
+}
+
+TEST(ElasticFace, QuarterPlateReportsTheWholePlate) {
+  const double depth = 0.1;
+  IndentationFixture full = elastic_face_plate("full", 0.5);
+  IndentationFixture quarter = elastic_face_plate("quarter", 0.5);
+  LinearIndentation a(*full.problem), b(*quarter.problem);
+  const IndentationState f = full.problem->evaluate(a.solve(depth), depth);
+  const IndentationState q = quarter.problem->evaluate(b.solve(depth), depth);
+  std::cout << "elastic face, plate at " << depth << " mm: force " << q.force << " / " << f.force
+            << " N, face approach at the apex " << q.local_indentation << " / "
+            << f.local_indentation << " mm, " << f.contact_nodes << " nodes in contact\n";
+  const auto expect_same = [](double x, double y, const std::string& what) {
+    test::record_verification(kTable, "elastic face, plate at 0.1 mm: quarter vs full, " + what, y,
+                              x, 1e-8, "the full model (a different sum over different nodes)");
+    EXPECT_NEAR(x, y, 1e-8 * std::abs(y)) << what;
+  };
+  expect_same(q.force, f.force, "force");
+  expect_same(q.local_indentation, f.local_indentation, "face approach at the apex");
+  expect_same(q.local_energy, f.local_energy, "face energy");
+  expect_same(q.energy, f.energy, "strain energy");
+  EXPECT_GT(f.contact_nodes, 4);  // the contact spreads over rings: the coupling is exercised
+  EXPECT_GT(f.local_indentation, 0);
+}
+
+// W(n) = trapezoidal int_0^H F dh on n equal steps; U + E_local at H. Error ratio 4 per halving.
+TEST(ElasticFace, WorkEqualsStrainPlusFaceEnergy_SecondOrder) {
+  const double depth = 0.1;
+  IndentationFixture fx = elastic_face_plate("quarter", 0.5);
+  LinearIndentation fast(*fx.problem);
+  const IndentationState end = fx.problem->evaluate(fast.solve(depth), depth);
+  const double stored = end.energy + end.local_energy;
+  std::vector<double> errors;
+  for (int n : {8, 16, 32}) {
+    double work = 0, previous = 0;
+    for (int i = 1; i <= n; ++i) {
+      const double h = depth * i / n;
+      const double force = fx.problem->evaluate(fast.solve(h), h).force;
+      work += 0.5 * (previous + force) * depth / n;
+      previous = force;
+    }
+    errors.push_back(work - stored);
+    std::cout << "elastic face: " << n << " steps, W = " << work << ", U + E_local = " << stored
+              << " N mm\n";
+  }
+  test::record_verification(kTable, "elastic face, plate to 0.1 mm: W (32 steps) vs U + E_local",
+                            stored, stored + errors.back(), 1e-3,
+                            "energy balance (the QP's envelope theorem)");
+  EXPECT_NEAR(errors.back(), 0, 1e-3 * stored);
+  for (std::size_t k = 1; k < errors.size(); ++k) {
+    const double ratio = errors[k - 1] / errors[k];
+    EXPECT_GT(ratio, 2.8) << k;
+    EXPECT_LT(ratio, 5.7) << k;
+  }
+  EXPECT_GT(end.local_energy, 0);
+}
+
+void expect_input_error(const std::string& yaml, const std::string& key, int line) {
+  try {
+    parse_case_file(yaml, "face.yaml");
+    FAIL() << "expected an input error naming " << key;
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::kInput);
+    EXPECT_EQ(e.where().key, key) << e.what();
+    EXPECT_EQ(e.where().line, line) << e.what();
+  }
+}
+
+TEST(ElasticFace, NonlinearKinematicsOrHomogenisedPlies_AreInputErrorsNamingTheKey) {
+  const std::string head =
+      "material: {type: isotropic, E: 70000 MPa, nu: 0.3}\n"
+      "laminate: {layup: \"[0]\", ply_thickness: 3.8 mm}\n"
+      "shell: {type: flat_circular_plate, radius: 25 mm, edge: clamped}\n"
+      "indenter: {shape: sphere, radius: 12.7 mm}\n";
+  expect_input_error(head +
+                         "kinematics: nonlinear\ncontact:\n  local: anisotropic\n"
+                         "  local_support: shell\n",
+                     "contact.local_support", 8);
+  expect_input_error(head +
+                         "kinematics: linear\ncontact:\n  local: anisotropic\n"
+                         "  local_support: shell\n  local_plies: homogenised\n",
+                     "contact.local_plies", 9);
+}
+
+}  // namespace
+}  // namespace si
