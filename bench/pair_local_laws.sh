@@ -5,18 +5,30 @@
 # `contact:` line is a flow map without `local` (default: studies/cap_00_path.yaml, the paper cap
 # 0-10 mm, full model, 1 mm apex mesh). The binary is copied first, so rebuilding meanwhile does
 # not mix versions. Figures go to docs/performance.md ("Local contact laws").
-#   bench/pair_local_laws.sh [BUILD_DIR] [CASE] [REPEATS]
+#   bench/pair_local_laws.sh [BUILD_DIR] [CASE] [REPEATS] [SET]
+# SET `nonlinear` (default): the laws of the total force on the case as written; `linear`: the
+# case with `kinematics: linear`, the linear laws (vam, the elastic face with and without the
+# F-bar rows) against `none` and `none` with the F-bar rows, all on the linear fast path.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD="${1:-build}"
 CASE="${2:-studies/cap_00_path.yaml}"
 REPEATS="${3:-2}"
+SET="${4:-nonlinear}"
 OUT="$(mktemp -d)"
 trap 'rm -rf "$OUT"' EXIT
 cp "$BUILD/shellindent" "$OUT/shellindent"
-LAWS=("none" "hertz" "yang_sun" "anisotropic, local_support: bonded" "anisotropic, local_support: plate")
+if [[ "$SET" == linear ]]; then
+  LAWS=("none" "none, fbar: true" "vam" "anisotropic, local_support: shell"
+        "anisotropic, local_support: shell, fbar: true")
+  KINEMATICS=linear
+else
+  LAWS=("none" "hertz" "yang_sun" "anisotropic, local_support: bonded" "anisotropic, local_support: plate")
+  KINEMATICS=""
+fi
 for i in "${!LAWS[@]}"; do
   sed "s/^\(contact: {.*\)}/\1, local: ${LAWS[$i]}}/" "$CASE" > "$OUT/case_$i.yaml"
+  [[ -n "$KINEMATICS" ]] && sed -i "s/^kinematics: .*/kinematics: $KINEMATICS/" "$OUT/case_$i.yaml"
   grep -q "local: ${LAWS[$i]}" "$OUT/case_$i.yaml" || { echo "no contact flow map in $CASE" >&2; exit 2; }
 done
 printf '%-40s %4s %8s %8s %7s %6s\n' law rep user_s ratio points iters

@@ -49,6 +49,8 @@ VARIANTS = {
     "bernstein4": ("paper_layups_bernstein4.yaml", "the paper's Bernstein element (bernstein4)"),
     "local": ("paper_layups_local.yaml",
               "local indentation in series (contact.local: anisotropic, plate support)"),
+    "face": ("paper_layups_face.yaml",
+             "linear, the elastic face with the F-bar rows (local_support: shell, fbar: true)"),
 }
 # Variants whose sweep is expected to fail, with the phrase every failed case's reason must hold.
 # bernstein4: the paper's shape functions have no partition of unity, so the mapped surface of

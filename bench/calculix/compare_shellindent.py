@@ -2,7 +2,8 @@
 """shellindent on the cap against the 3-D CalculiX reference (issue 20).
 
   /usr/bin/python3 bench/calculix/compare_shellindent.py [--build build] [--size-apex 0.5]
-      [--laws none,hertz,anisotropic:plate] [--layups ...] [--kinematics linear,nonlinear]
+      [--laws none,hertz,anisotropic:plate,anisotropic:shell+fbar] [--layups ...]
+      [--kinematics linear,nonlinear]
 
 For every lay-up, kinematics and local law (`anisotropic:SUPPORT` for contact.local: anisotropic
 with contact.local_support: SUPPORT) it writes a case file (work/si/), runs
@@ -36,9 +37,12 @@ QUARTER = {"[0]8": True, "[0/90]2S": True, "[45/-45]2S": False}
 
 
 def local_keys(law: str) -> str:
-    """The contact keys of a law token: `hertz`, or `anisotropic:plate` (law and its support)."""
+    """The contact keys of a law token: `hertz`, `anisotropic:plate` (law and its support), and
+    either with `+fbar` (contact.fbar: true, the face's Poisson rise from the shell's strains)."""
+    law, plus, option = law.partition("+")
     name, _, support = law.partition(":")
-    return f"local: {name}" + (f", local_support: {support}" if support else "")
+    keys = f"local: {name}" + (f", local_support: {support}" if support else "")
+    return keys + (f", {option}: true" if plus else "")
 
 
 def case_text(layup: str, kinematics: str, law: str, size_apex: float, depth_max: float,
@@ -109,7 +113,7 @@ def main(argv=None):
             rw = np.array([r["apex_mid_w_mm"] for r in mine])
             for law in a.laws.split(","):
                 tag = f"{decks.layup_slug(layup)}_{kin}_" \
-                      f"{law.replace(':', '-')}_" \
+                      f"{law.replace(':', '-').replace('+', '-')}_" \
                       f"{a.size_apex:g}"
                 case = WORK / f"{tag}.yaml"
                 case.write_text(case_text(layup, kin, law, a.size_apex, 1.0, TRAVELS))
