@@ -36,7 +36,6 @@ class HankelJ0 {
 
  private:
   double direct(double rho) const;  // closed forms plus the remainder's series
-  double direct_slope(double rho) const;
   double t1_ = 0, s3_ = 0, rho_max_ = 0;
   ChebyshevSeries remainder_;
   double step_ = 0;

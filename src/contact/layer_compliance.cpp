@@ -143,4 +143,16 @@ PlateFaceCompliance plate_face_compliance(const std::vector<LayerStiffness>& lay
   return out;
 }
 
+double plate_top_compliance(const std::vector<LayerStiffness>& layers, double phi_rad,
+                            double wavenumber) {
+  check_stack(layers, wavenumber);
+  const Vector3d e(std::cos(phi_rad), std::sin(phi_rad), 0);
+  const double c_ref = reference_modulus(layers);
+  Sweep s;
+  s.basis.topRows<3>().setIdentity();  // traction-free bottom face: U free, s = 0
+  for (const LayerStiffness& l : layers)
+    propagate(s, state_matrix(l.C, e, c_ref), wavenumber * l.thickness, false);
+  return normal_compliance(s.basis.topRows<3>(), s, c_ref);
+}
+
 }  // namespace si

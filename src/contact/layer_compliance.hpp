@@ -45,5 +45,9 @@ struct PlateFaceCompliance {
 };
 PlateFaceCompliance plate_face_compliance(const std::vector<LayerStiffness>& layers, double phi_rad,
                                           double wavenumber);
+// Its top face's alone (no mid-plane, no thickness integral: a 6 x 6 exponential per step
+// instead of the bordered 9 x 9), 1/MPa.
+double plate_top_compliance(const std::vector<LayerStiffness>& layers, double phi_rad,
+                            double wavenumber);
 
 }  // namespace si

@@ -77,6 +77,7 @@ class SupportKernel {
   SupportSpec spec_;
   int directions_;
   double thickness_ = 0, far_compliance_ = 0;
+  double far_field_ = 0;  // x beyond which the top layer's half-space is the face's compliance
   std::vector<double> poisson_c2_, bending_ratio_;  // per direction: c2 (kShell: L), D / (G h^2)
   ChebyshevSeries kappa_;                           // in xi
   // K(y) at y_j = j dy with K'(y_j), from its Chebyshev series, for cubic Hermite interpolation

@@ -67,6 +67,7 @@ void ContactRows::add_multiplier_terms(int i, const NcpValue& phi, double dent_r
 }
 
 void ContactRows::residual(const TermPoint& p, cont::Vector& F) {
+  prepare_layer(p);
   for (int i = 0; i < size(); ++i) {
     const double lambda = p.z[first() + i];
     const double depth = face_depth(candidates_[i], p.z, p.h);
@@ -76,6 +77,7 @@ void ContactRows::residual(const TermPoint& p, cont::Vector& F) {
 
 // Only the gaps depend on h, through g = s(p) - t0 - h.
 void ContactRows::residual_p(const TermPoint& p, cont::Vector& out) {
+  prepare_layer(p);
   for (int i = 0; i < size(); ++i) {
     const double lambda = p.z[first() + i];
     const double depth = face_depth(candidates_[i], p.z, p.h);
@@ -86,6 +88,7 @@ void ContactRows::residual_p(const TermPoint& p, cont::Vector& out) {
 }
 
 void ContactRows::signature(const TermPoint& p, std::vector<int>& out) const {
+  prepare_layer(p);
   for (int i = 0; i < size(); ++i) {
     const double lambda = p.z[first() + i];
     const double depth = face_depth(candidates_[i], p.z, p.h);
@@ -157,6 +160,7 @@ void ContactRows::quantities(const TermPoint& p, IndentationState& out) const {
 }
 
 void ContactRows::outputs(const TermPoint& p, IndentationState& out) const {
+  prepare_layer(p);
   // Curvature extremes over the nodes in contact (as contact_nodes counts them).
   const cont::Vector lambda = multipliers(p.z);
   const double lambda_max = lambda.size() ? lambda.cwiseAbs().maxCoeff() : 0.0;

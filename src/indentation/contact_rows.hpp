@@ -95,6 +95,10 @@ class ContactRows : public ContactTerm {
   double layer_at(int i, const TermPoint& p) const {
     return approach_->layer(candidates_, i, multipliers(p.z));
   }
+  // Before a sweep over the candidates at p (LocalApproach::prepare).
+  void prepare_layer(const TermPoint& p) const {
+    approach_->prepare(candidates_, multipliers(p.z));
+  }
   // The depth of the indenter into the contact face at mesh node `node`: h - u(r_node; alpha).
   double face_depth(int node, const cont::Vector& z, double h) const;
   // The gap candidate i's row sees: its gap plus the local layer's approach.

@@ -64,8 +64,33 @@ double ElasticFace::coefficient(int a, int b) const {
   return c;
 }
 
+void ElasticFace::keep_columns_of(const std::vector<int>& nodes) const {
+  if (nodes == column_nodes_) return;
+  column_nodes_ = nodes;
+  columns_.assign(nodes.size(), Eigen::VectorXd());
+}
+
+const Eigen::VectorXd& ElasticFace::column(const std::vector<int>& nodes, int j) const {
+  Eigen::VectorXd& c = columns_[j];
+  if (c.size() == 0) {
+    c.resize(static_cast<Eigen::Index>(nodes.size()));
+    for (int i = 0; i < static_cast<int>(nodes.size()); ++i) c[i] = coefficient(nodes[i], nodes[j]);
+  }
+  return c;
+}
+
+void ElasticFace::prepare(const std::vector<int>& nodes,
+                          const Eigen::Ref<const cont::Vector>& lambda) const {
+  keep_columns_of(nodes);
+  approach_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nodes.size()));
+  for (int j = 0; j < static_cast<int>(nodes.size()); ++j)
+    if (lambda[j] != 0) approach_ += lambda[j] * column(nodes, j);
+  prepared_for_ = lambda.data();
+}
+
 double ElasticFace::layer(const std::vector<int>& nodes, int i,
                           const Eigen::Ref<const cont::Vector>& lambda) const {
+  if (lambda.data() == prepared_for_ && approach_.size() == lambda.size()) return approach_[i];
   double u = 0;
   for (int j = 0; j < static_cast<int>(nodes.size()); ++j)
     if (lambda[j] != 0) u += coefficient(nodes[i], nodes[j]) * lambda[j];
@@ -73,18 +98,19 @@ double ElasticFace::layer(const std::vector<int>& nodes, int i,
 }
 
 void ElasticFace::add_compliance_column(const std::vector<int>& nodes, int j,
-                                        Eigen::VectorXd& column) const {
-  for (int i = 0; i < static_cast<int>(nodes.size()); ++i)
-    column[i] += coefficient(nodes[i], nodes[j]);
+                                        Eigen::VectorXd& column_j) const {
+  keep_columns_of(nodes);
+  column_j += column(nodes, j);
 }
 
 void ElasticFace::outputs(const TermPoint& p, IndentationState& out) const {
   const ShellModel& model = shell_.model();
   const std::vector<int>& nodes = rows_.candidates();
-  const cont::Vector lambda = rows_.multipliers(p.z);
+  const Eigen::Ref<const cont::Vector> lambda = rows_.multipliers(p.z);
+  prepare(nodes, lambda);
   for (int i = 0; i < rows_.size(); ++i) {
     if (lambda[i] == 0 && nodes[i] != model.apex_node()) continue;
-    const double approach = layer(nodes, i, lambda);
+    const double approach = approach_[i];
     out.local_energy += model.symmetry_factor * 0.5 * lambda[i] * approach;
     if (nodes[i] == model.apex_node()) out.local_indentation = approach;
   }

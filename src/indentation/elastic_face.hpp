@@ -37,6 +37,10 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   // The approach at the apex node and the energy 1/2 lambda^T C lambda (whole shell).
   void outputs(const TermPoint& p, IndentationState& out) const override;
 
+  // u = C lambda over the candidates, once per sweep (from C's columns of the pressed nodes).
+  void prepare(const std::vector<int>& nodes,
+               const Eigen::Ref<const cont::Vector>& lambda) const override;
+  // u_i as prepared for these multipliers (by their storage), else computed for row i alone.
   double layer(const std::vector<int>& nodes, int i,
                const Eigen::Ref<const cont::Vector>& lambda) const override;
   double layer_rate(int node) const override { return coefficient(node, node); }
@@ -54,12 +58,21 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   };
   // The images of point x in the symmetry planes, x itself first.
   std::vector<Vector3d> images(const Vector3d& x) const;
+  // C's column j over `nodes`, computed on first use and kept (the pressed nodes' columns: as
+  // many as the fast path keeps of S), after keep_columns_of(nodes), which drops them when the
+  // candidates change.
+  void keep_columns_of(const std::vector<int>& nodes) const;
+  const Eigen::VectorXd& column(const std::vector<int>& nodes, int j) const;
 
   const ShellPart& shell_;
   const ContactBody& body_;
   const ContactRows& rows_;
   std::vector<Mirror> mirrors_;
   std::unique_ptr<FaceInfluence> influence_;
+  mutable std::vector<int> column_nodes_;
+  mutable std::vector<Eigen::VectorXd> columns_;
+  mutable Eigen::VectorXd approach_;  // u = C lambda of the last prepare()
+  mutable const double* prepared_for_ = nullptr;
 };
 
 }  // namespace si

@@ -18,6 +18,10 @@ class LocalApproach {
   virtual ~LocalApproach() = default;
   // The dent of the face at mesh node `node` and its rate d/dalpha.
   virtual DentValue dent(int, const cont::Vector&) const { return {}; }
+  // Called before a sweep over the candidates with the same multipliers (the rows' residual,
+  // signature, Jacobian and outputs): a non-local law computes its approaches once here.
+  virtual void prepare(const std::vector<int>& /*nodes*/,
+                       const Eigen::Ref<const cont::Vector>& /*lambda*/) const {}
   // The approach at candidate i (mesh node nodes[i]) carried by the candidates' multipliers
   // `lambda` (N), mm.
   virtual double layer(const std::vector<int>& /*nodes*/, int /*i*/,

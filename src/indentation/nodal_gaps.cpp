@@ -102,6 +102,7 @@ void NodalGaps::add_shell_force(const TermPoint& p, cont::Vector& r_free) {
 
 void NodalGaps::add_jacobian(const TermPoint& p, double* J,
                              std::vector<ContactJacobianRow>* condensed) {
+  prepare_layer(p);
   const bool nonlinear = shell().nonlinear();
   for (int i = 0; i < size(); ++i) {
     const double lambda = p.z[first() + i];

@@ -61,6 +61,7 @@ void WeightedGaps::add_shell_force(const TermPoint& p, cont::Vector& r_free) {
 }
 
 void WeightedGaps::add_jacobian(const TermPoint& p, double* J, std::vector<ContactJacobianRow>*) {
+  prepare_layer(p);
   for (int k = 0; k < size(); ++k) {
     const double lambda = p.z[first() + k];
     const DentValue dent = dent_at(candidates_[k], p.z);
