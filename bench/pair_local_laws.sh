@@ -23,7 +23,8 @@ if [[ "$SET" == linear ]]; then
         "anisotropic, local_support: shell, fbar: true")
   KINEMATICS=linear
 else
-  LAWS=("none" "hertz" "yang_sun" "anisotropic, local_support: bonded" "anisotropic, local_support: plate")
+  LAWS=("none" "hertz" "yang_sun" "anisotropic, local_support: bonded" "anisotropic, local_support: plate"
+        "anisotropic, local_support: shell")
   KINEMATICS=""
 fi
 for i in "${!LAWS[@]}"; do

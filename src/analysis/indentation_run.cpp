@@ -465,13 +465,6 @@ PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& cal
   // the indenter's rows only (not a support frame's): no fast path then.
   const bool fast = setup.model.kinematics == Kinematics::kLinear &&
                     setup.problem->num_local_unknowns() == 0 && !setup.problem->support_frame();
-  // The case file refuses the elastic face with nonlinear kinematics; a support frame (a
-  // fixture's contact) also takes the Newton paths, whose rows cannot carry it.
-  if (!fast && !setup.problem->local_law_local_to_rows())
-    throw_input(
-        "`local_support: shell` (the elastic face) is solved by the linear fast path only, "
-        "which has no support frame; choose another support with this fixture",
-        Where{setup.spec.file, "contact.local_support", "shell", 0});
   // The onset of nonlinearity's bracket start is kept on the way (critical_points.hpp).
   const std::shared_ptr<OnsetWatch> watch = control.critical_points ? watch_onset(setup) : nullptr;
   const PathCallback watched = watching(watch, callback);

@@ -28,6 +28,7 @@ class FaceInfluence {
   FaceInfluence(std::shared_ptr<const SupportKernel> kernel, double r_max);
 
   double thickness() const { return h_; }
+  double r_max() const { return transform_.rho_max() * h_; }
   // C(r), mm/N, 0 < r <= r_max.
   double point(double r) const;
   // C_b, mm/N: the centre of a disc of radius b (mm, 0 < b <= r_max) under a unit force.

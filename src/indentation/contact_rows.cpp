@@ -21,6 +21,8 @@ void ContactRows::set_candidates(const std::vector<int>& nodes) {
 void ContactRows::add_pattern(Triplets& t) const {
   for (int i = 0; i < size(); ++i)
     add_node_row_pattern(shell().dofs(), candidates_[i], first() + i, approach_->alpha_index(), t);
+  for (int i = 0; i < size(); ++i)
+    for (int j : approach_->coupled(candidates_, i)) t.emplace_back(first() + i, first() + j, 0.0);
 }
 
 void ContactRows::locate(const SparseMatrix& J) {
@@ -28,6 +30,19 @@ void ContactRows::locate(const SparseMatrix& J) {
   for (int i = 0; i < size(); ++i)
     slots_.push_back(
         locate_node_row(shell().dofs(), candidates_[i], first() + i, approach_->alpha_index(), J));
+  coupled_.assign(candidates_.size(), {});
+  coupling_slots_.assign(candidates_.size(), {});
+  for (int i = 0; i < size(); ++i) {
+    coupled_[i] = approach_->coupled(candidates_, i);
+    for (int j : coupled_[i]) coupling_slots_[i].push_back(value_slot(J, first() + i, first() + j));
+  }
+}
+
+void ContactRows::add_layer_coupling(int i, const NcpValue& phi, double* J) const {
+  if (phi.d_b == 0.0) return;
+  for (std::size_t k = 0; k < coupled_[i].size(); ++k)
+    J[coupling_slots_[i][k]] +=
+        phi.d_b * kappa() * approach_->layer_coupling(candidates_, i, coupled_[i][k]);
 }
 
 double ContactRows::face_depth(int node, const cont::Vector& z, double h) const {

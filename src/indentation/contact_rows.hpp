@@ -68,8 +68,6 @@ class ContactRows : public ContactTerm {
   void add_compliance_column(int j, Eigen::VectorXd& column) const {
     approach_->add_compliance_column(candidates_, j, column);
   }
-  // Whether the Newton paths can carry the local law (LocalApproach::local_to_rows).
-  bool local_law_local_to_rows() const { return approach_->local_to_rows(); }
   // lambda_i over this is candidate i's contact pressure, MPa (the state's `pressures`).
   double pressure_area_of(int i) const { return pressure_area(i); }
 
@@ -109,6 +107,10 @@ class ContactRows : public ContactTerm {
   // The entries of candidate i's row and column that are the same for nodal and weighted gaps:
   // the diagonal and, with a power law's alpha, d g / d alpha = the dent's rate (`dent_rate`).
   void add_multiplier_terms(int i, const NcpValue& phi, double dent_rate, double* J) const;
+  // A non-local law's entries of candidate i's row in the other multipliers' columns:
+  // d_b kappa d layer_i / d lambda_j.
+  void add_layer_coupling(int i, const NcpValue& phi, double* J) const;
+  bool layer_couples_rows() const { return approach_->couples_rows(); }
 
   const ShellPart& shell() const { return setting_.shell; }
   const ContactBody& body() const { return setting_.body; }
@@ -117,6 +119,9 @@ class ContactRows : public ContactTerm {
   const ContactRowsSetting setting_;
   std::vector<int> candidates_;
   std::vector<Slots> slots_;
+  // Per candidate: the non-local law's coupled candidates and their value slots in its row.
+  std::vector<std::vector<int>> coupled_;
+  std::vector<std::vector<int>> coupling_slots_;
 
  private:
   static const LocalApproach kNoApproach;

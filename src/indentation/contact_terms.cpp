@@ -41,8 +41,8 @@ ContactParts make_contact_parts(const IndentationOptions& options,
     rows->set_approach(*layer);
     law = std::move(layer);
   } else if (options.local.kind == LocalLawKind::kElasticFace) {
-    auto face =
-        std::make_unique<ElasticFace>(options.local.face, setting.shell, setting.body, *rows);
+    auto face = std::make_unique<ElasticFace>(options.local.face, setting.shell, setting.body,
+                                              *rows, options.face_zone_radius);
     rows->set_approach(*face);
     law = std::move(face);
   }

@@ -9,8 +9,9 @@
 namespace si {
 
 ElasticFace::ElasticFace(std::shared_ptr<const SupportKernel> kernel, const ShellPart& shell,
-                         const ContactBody& body, const ContactRows& rows)
-    : shell_(shell), body_(body), rows_(rows) {
+                         const ContactBody& body, const ContactRows& rows, double zone_radius)
+    : shell_(shell), body_(body), rows_(rows), zone_radius_(zone_radius) {
+  SI_REQUIRE(zone_radius >= 0, "ElasticFace: a negative zone radius");
   const ShellModel& model = shell.model();
   for (const Support& s : model.supports)
     if (s.kind == SupportKind::kSymmetryPlane) {
@@ -43,7 +44,27 @@ std::vector<Vector3d> ElasticFace::images(const Vector3d& x) const {
   return out;
 }
 
+bool ElasticFace::in_zone(int node) const {
+  if (zone_radius_ == 0) return true;
+  const std::vector<Vector3d>& x = body_.face_points();
+  return (x[node] - x[body_.first_node()]).norm() <= zone_radius_;
+}
+
+std::vector<int> ElasticFace::coupled(const std::vector<int>& nodes, int i) const {
+  std::vector<int> out;
+  if (!in_zone(nodes[i])) return out;
+  for (int j = 0; j < static_cast<int>(nodes.size()); ++j)
+    if (j != i && in_zone(nodes[j])) out.push_back(j);
+  return out;
+}
+
+double ElasticFace::layer_coupling(const std::vector<int>& nodes, int i, int j) const {
+  keep_columns_of(nodes);
+  return column(nodes, j)[i];
+}
+
 double ElasticFace::coefficient(int a, int b) const {
+  if (a != b && !(in_zone(a) && in_zone(b))) return 0.0;
   const std::vector<Vector3d>& x = body_.face_points();
   // Images closer than this to x_a are x_a itself: the node's own disc, which the coincident
   // images share (a node on a symmetry plane carries half its physical force and area).
@@ -54,7 +75,7 @@ double ElasticFace::coefficient(int a, int b) const {
     const double r = (x[a] - image).norm();
     if (r <= own)
       ++coincident;
-    else
+    else if (r <= influence_->r_max())  // beyond: a candidate added later, far from the contact
       c += influence_->point(r);
   }
   if (coincident > 0) {

@@ -7,9 +7,14 @@
 // face's, positive definite.
 //
 // Linear in the multipliers with no unknown of its own: the linear fast path adds C's columns to
-// the Schur complement (linear_indentation.hpp). Every pair of candidates is coupled, which the
-// Newton paths' rows (one node each) do not carry: nonlinear kinematics and support frames are
-// refused (local_to_rows() false; io/case_file.cpp and run_indentation_path).
+// the Schur complement (linear_indentation.hpp); the Newton paths' rows gain C's entries in the
+// other multipliers' columns (coupled(), layer_coupling()), a dense block over the zone, and the
+// direct LU. The zone: the candidates within `zone_radius` of the first touch's face point (0:
+// all), which the runs make the sphere's chord at the path's depth, an upper bound of the
+// contact radius. Outside it a node's approach is its own disc's alone: C_ij = 0 for i != j
+// unless both lie in the zone, in every path (the fast path too), so that the two solve one
+// model. The coefficients are those of the reference configuration (the face's kernel is a
+// small-strain one; with nonlinear kinematics the contact patch stays small against the cap).
 #pragma once
 
 #include <memory>
@@ -27,7 +32,7 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   // The influence table reaches the largest distance between the body's reachable nodes and
   // their images. Keeps references to the shell, the body and the rows.
   ElasticFace(std::shared_ptr<const SupportKernel> kernel, const ShellPart& shell,
-              const ContactBody& body, const ContactRows& rows);
+              const ContactBody& body, const ContactRows& rows, double zone_radius = 0);
 
   int size() const override { return 0; }
   void add_pattern(Triplets&) const override {}
@@ -46,10 +51,13 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   double layer_rate(int node) const override { return coefficient(node, node); }
   void add_compliance_column(const std::vector<int>& nodes, int j,
                              Eigen::VectorXd& column) const override;
-  bool local_to_rows() const override { return false; }
+  std::vector<int> coupled(const std::vector<int>& nodes, int i) const override;
+  double layer_coupling(const std::vector<int>& nodes, int i, int j) const override;
+  bool couples_rows() const override { return true; }
 
-  // C between mesh nodes a and b, mm/N.
+  // C between mesh nodes a and b, mm/N (0 for a != b unless both lie in the zone).
   double coefficient(int a, int b) const;
+  bool in_zone(int node) const;
 
  private:
   struct Mirror {
@@ -68,6 +76,7 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   const ContactBody& body_;
   const ContactRows& rows_;
   std::vector<Mirror> mirrors_;
+  double zone_radius_ = 0;
   std::unique_ptr<FaceInfluence> influence_;
   mutable std::vector<int> column_nodes_;
   mutable std::vector<Eigen::VectorXd> columns_;

@@ -333,10 +333,6 @@ void IndentationProblem::add_local_compliance_column(int j, Eigen::VectorXd& col
   contact_->add_compliance_column(j, column);
 }
 
-bool IndentationProblem::local_law_local_to_rows() const {
-  return contact_->local_law_local_to_rows();
-}
-
 IndentationCounters IndentationProblem::counters() const {
   IndentationCounters c = counters_;
   c.tangent_assemblies = shell_.tangent_assemblies();

@@ -134,8 +134,7 @@ class IndentationProblem : public cont::Problem {
   // the elastic face; the fast path adds it to the Schur complement. A power-law local law is
   // nonlinear: the fast path refuses it (run_indentation_path routes it to the continuation).
   void add_local_compliance_column(int j, Eigen::VectorXd& column) const;
-  // Whether the Newton paths carry the local law (not the elastic face: the fast path only).
-  bool local_law_local_to_rows() const;
+
   IndentationState evaluate(const cont::Vector& z, double h);
   // What else the state carries from the displacement field (the failure indices of a run that
   // monitors damage, analysis/damage_probe.hpp), from now on; none by default. Set it before the

@@ -36,9 +36,17 @@ class LocalApproach {
                                      Eigen::VectorXd& column) const {
     column[j] += layer_rate(nodes[j]);
   }
-  // Whether layer_rate is all of the coupling (the Newton paths' rows carry no other); a
-  // non-local face couples every pair of candidates and is solved by the linear fast path only.
-  virtual bool local_to_rows() const { return true; }
+  // A non-local law's coupling of candidate i's approach to other candidates' multipliers: the
+  // j != i it depends on (the Jacobian's pattern; fixed for a candidate set) and
+  // d layer_i / d lambda_j for them, mm/N.
+  virtual std::vector<int> coupled(const std::vector<int>& /*nodes*/, int /*i*/) const {
+    return {};
+  }
+  virtual double layer_coupling(const std::vector<int>& /*nodes*/, int /*i*/, int /*j*/) const {
+    return 0.0;
+  }
+  // Whether it couples rows at all (the rows are then not condensable on their nodes).
+  virtual bool couples_rows() const { return false; }
   // The position of alpha in z (the dent's column in the contact rows), -1 without one.
   virtual int alpha_index() const { return -1; }
   // A power law's start is regular only at the kink of the NCP function: a gap within

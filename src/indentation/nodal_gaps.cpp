@@ -114,6 +114,7 @@ void NodalGaps::add_jacobian(const TermPoint& p, double* J,
     if (condensed) condensed->push_back(condensed_node_row(s, g, multiplier_diagonal(i, phi), b));
     add_node_row_entries(s, g, lambda, b, nonlinear && lambda != 0.0, J);
     add_multiplier_terms(i, phi, g.hits ? dent.rate : 0.0, J);
+    add_layer_coupling(i, phi, J);
     const double k = rise_factor(i, g);
     if (k == 0.0) continue;
     for (std::size_t j = 0; j < rise_rows_[i].size(); ++j) {

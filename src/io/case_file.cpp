@@ -251,14 +251,6 @@ ContactSpec read_contact(const MapReader& top, Kinematics kinematics,
       throw_input(std::string("`") + key + "` chooses how `local: anisotropic` is built; set " +
                       "`local: anisotropic` or remove it",
                   map->where(key));
-  // The elastic face couples every pair of contact nodes: the linear fast path solves it, the
-  // Newton rows (one node each) do not carry it (indentation/elastic_face.hpp).
-  if (contact.local_support == LocalSupport::kShell && kinematics != Kinematics::kLinear)
-    throw_input(
-        "`local_support: shell` (the elastic face) is solved with linear kinematics only; set "
-        "`kinematics: linear` or choose another support (plate, bonded, frictionless, "
-        "half_space)",
-        map->where("local_support"));
   if (contact.local_support == LocalSupport::kShell && map->has("local_plies") &&
       contact.local_plies != LocalPlies::kResolved)
     throw_input(

@@ -316,9 +316,10 @@ std::vector<BadInput> case_file_rows() {
               {"case.yaml:3", "contact.traction", "linear kinematics"}),
       run_row("FbarOnNodalContactNeedsLinearKinematics", kHead + "contact: {fbar: true}\n",
               {"case.yaml:3", "contact.fbar", "linear kinematics"}),
-      run_row("ElasticFaceNeedsLinearKinematics",
-              kHead + "contact: {local: anisotropic, local_support: shell}\n",
-              {"case.yaml:3", "contact.local_support", "linear kinematics"}),
+      run_row(
+          "ElasticFaceHomogenisedPlies",
+          kHead + "contact: {local: anisotropic, local_support: shell, local_plies: homogenised}\n",
+          {"case.yaml:3", "contact.local_plies", "always resolves"}),
       run_row("LocalLawMisspelt", kHead + "contact: {local: hertzz}\n",
               {"case.yaml:3", "contact.local", "did you mean 'hertz'"}),
       run_row("PathMethodUnknown", kHead + "path: {method: arc}\n",

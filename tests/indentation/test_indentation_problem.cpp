@@ -230,6 +230,20 @@ TEST(IndentationProblem, AnisotropicPlateLaw_JacobianMatchesFiniteDifferences) {
   expect_jacobian_matches_fd(*g.problem, 0.3);
 }
 
+// The elastic face (local_support: shell): its coupling of every row to every other
+// multiplier (the dense block of C over the candidates) and its diagonal, against finite
+// differences, nonlinear (quarter: mirror images) and linear (full).
+TEST(IndentationProblem, ElasticFace_JacobianMatchesFiniteDifferences) {
+  const CaseFile c = coarse_cap_case("nonlinear", "[0/90]2S", "quarter");
+  const LocalContactLaw law =
+      anisotropic_local_law(c.laminate, {LocalSupport::kShell, LocalPlies::kResolved, 10.98, 0.0});
+  ASSERT_EQ(law.kind, LocalLawKind::kElasticFace);
+  IndentationFixture f(c, exact_solves(with_local(law)));
+  expect_jacobian_matches_fd(*f.problem, 0.3);
+  IndentationFixture g(coarse_cap_case("linear", "[0/90]2S"), exact_solves(with_local(law)));
+  expect_jacobian_matches_fd(*g.problem, 0.3);
+}
+
 TEST(IndentationProblem, HertzLocalLaw_DepthDerivativeMatchesFiniteDifferences) {
   IndentationFixture f(coarse_cap_case("nonlinear", "[0/90]2S"), with_local(kHertz));
   expect_depth_derivative_matches_fd(*f.problem);

@@ -7,7 +7,8 @@
 //    S = C K^-1 C^T + C_face, whose optimal value's derivative in h is -F (the envelope theorem),
 //    so W = int F dh = 1/2 lambda^T S lambda = U + E_local at every depth: the trapezoidal work
 //    over a refined grid converges to the reported U + E_local at second order;
-//  * input errors: nonlinear kinematics and homogenised plies, naming the key and its line.
+//  * KINSOL (the Newton rows with C's dense block) against the fast path, one model;
+//  * input errors: homogenised plies, naming the key and its line.
 // Its agreement with a resolved 3-D model is measured against CalculiX (bench/calculix,
 // docs/verification.md section 7), not here.
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 #include "../indentation/indentation_test_support.hpp"
 #include "../verification_record.hpp"
 #include "analysis/local_contact.hpp"
+#include "continuation/kinsol_corrector.hpp"
 #include "core/error.hpp"
 #include "indentation/linear_indentation.hpp"
 #include "io/case_file.hpp"
@@ -100,6 +102,28 @@ TEST(ElasticFace, WorkEqualsStrainPlusFaceEnergy_SecondOrder) {
   EXPECT_GT(end.local_energy, 0);
 }
 
+// The same problem by KINSOL (the Newton rows with C's dense block, direct LU) and by the fast
+// path (C's columns in the Schur complement): two solvers of one model.
+TEST(ElasticFace, KinsolMatchesTheFastPath) {
+  const double depth = 0.1;
+  IndentationFixture fx = elastic_face_plate("quarter", 0.5);
+  IndentationProblem& p = *fx.problem;
+  LinearIndentation fast(p);
+  const IndentationState s = p.evaluate(fast.solve(depth), depth);
+  cont::Vector z = p.initial_point();
+  for (int i = 1; i <= 4; ++i) {
+    const cont::NewtonResult r =
+        cont::solve_at(p, z, depth * i / 4, testing::tight_kinsol_settings(p));
+    ASSERT_TRUE(r.converged) << r.reason;
+  }
+  const IndentationState k = p.evaluate(z, depth);
+  test::record_verification(kTable, "elastic face, plate at 0.1 mm: force, KINSOL vs fast path",
+                            s.force, k.force, 1e-8, "the fast path (another solver, same model)");
+  EXPECT_NEAR(k.force, s.force, 1e-8 * s.force);
+  EXPECT_NEAR(k.local_indentation, s.local_indentation, 1e-8 * s.local_indentation);
+  EXPECT_EQ(k.contact_nodes, s.contact_nodes);
+}
+
 void expect_input_error(const std::string& yaml, const std::string& key, int line) {
   try {
     parse_case_file(yaml, "face.yaml");
@@ -111,16 +135,12 @@ void expect_input_error(const std::string& yaml, const std::string& key, int lin
   }
 }
 
-TEST(ElasticFace, NonlinearKinematicsOrHomogenisedPlies_AreInputErrorsNamingTheKey) {
+TEST(ElasticFace, HomogenisedPlies_AreAnInputErrorNamingTheKey) {
   const std::string head =
       "material: {type: isotropic, E: 70000 MPa, nu: 0.3}\n"
       "laminate: {layup: \"[0]\", ply_thickness: 3.8 mm}\n"
       "shell: {type: flat_circular_plate, radius: 25 mm, edge: clamped}\n"
       "indenter: {shape: sphere, radius: 12.7 mm}\n";
-  expect_input_error(head +
-                         "kinematics: nonlinear\ncontact:\n  local: anisotropic\n"
-                         "  local_support: shell\n",
-                     "contact.local_support", 8);
   expect_input_error(head +
                          "kinematics: linear\ncontact:\n  local: anisotropic\n"
                          "  local_support: shell\n  local_plies: homogenised\n",
