@@ -7,8 +7,10 @@
 //     t1 (1 + x^2)^-1/2          ->  t1 I0(rho/2) K0(rho/2)                     (G&R 6.552.1)
 //     s3 (1 + x^2)^-3/2          ->  s3 (rho/2) [I0 K1 - I1 K0](rho/2),   s3 = t3 + t1 / 2
 // (the second is -(1/a) d/da of the first at a = 1, for (x^2 + a^2)^-1/2), and the rest, which
-// decays like x^-5, by Gauss-Legendre panels on [0, x_max] into a Chebyshev series in rho (smooth
-// at rho = 0: its integrand is absolutely integrable with three moments). F + t1 ln rho, smooth
+// decays like x^-5, through Bessel's integral J0(x rho) = (2/pi) int_0^{pi/2} cos(x rho sin t) dt:
+// its cosine transform by Gauss-Legendre panels on [0, x_max] as a Chebyshev series, then the
+// integral over t by Gauss, into a Chebyshev series in rho (smooth at rho = 0: its integrand is
+// absolutely integrable with three moments). F + t1 ln rho, smooth
 // but for rho^2 ln rho terms, is then sampled for cubic Hermite interpolation (the contact columns
 // evaluate F ~1e6 times; Clenshaw's recurrence and the Bessel functions would dominate); within
 // the first samples, where those terms are not cubics, F is evaluated in closed form.
