@@ -31,6 +31,7 @@ K22_CONTACT_MIN_PER_MM = "k22_contact_min_per_mm"
 K22_CONTACT_MAX_PER_MM = "k22_contact_max_per_mm"
 ERROR_ESTIMATE = "error_estimate"
 FRAME_FORCE_N = "frame_force_N"
+APEX_MID_W_MM = "apex_mid_w_mm"
 FORCE_ERROR_ESTIMATE = "force_error_estimate"
 MAX_STRESS_INDEX = "max_stress_index"
 TSAI_WU_INDEX = "tsai_wu_index"
@@ -69,6 +70,7 @@ PATH_COLUMNS = (
     K22_CONTACT_MAX_PER_MM,
     ERROR_ESTIMATE,
     FRAME_FORCE_N,
+    APEX_MID_W_MM,
     FORCE_ERROR_ESTIMATE,
     MAX_STRESS_INDEX,
     TSAI_WU_INDEX,
@@ -107,6 +109,7 @@ UNITS = {
     K22_CONTACT_MAX_PER_MM: "1/mm",
     ERROR_ESTIMATE: "-",
     FRAME_FORCE_N: "N",
+    APEX_MID_W_MM: "mm",
     FORCE_ERROR_ESTIMATE: "-",
     MAX_STRESS_INDEX: "-",
     TSAI_WU_INDEX: "-",

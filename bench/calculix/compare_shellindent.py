@@ -9,7 +9,9 @@ For every lay-up, kinematics and local law (`anisotropic:SUPPORT` for contact.lo
 with contact.local_support: SUPPORT) it writes a case file (work/si/), runs
 `build/shellindent run CASE --out DIR`, and compares its force with the reference of
 results/cap_reference.csv (analyse.py): at equal travel (0.1, 0.25, 0.5, 1 mm) and at equal apex
-mid-surface deflection (the reference's force interpolated at shellindent's apex deflection).
+mid-surface deflection (the reference's force interpolated at shellindent's apex deflection:
+path.csv's apex_mid_w_mm, the laminate's mid-plane, which differs from the shell's apex_w_mm
+with the elastic face).
 Writes results/shellindent_vs_3d.csv and prints the table.
 """
 from __future__ import annotations
@@ -125,7 +127,10 @@ def main(argv=None):
                 path = read_csv(out / "path.csv")
                 d = np.array([r["depth_mm"] for r in path])
                 f = np.array([r["force_N"] for r in path])
-                w = np.array([r["apex_w_mm"] for r in path])
+                # The laminate's mid-plane (the elastic face's mid-plane kernel added to the
+                # shell's deflection) where the run reports it, as the solid's apex_mid_w_mm is.
+                wcol = "apex_mid_w_mm" if "apex_mid_w_mm" in path[0] else "apex_w_mm"
+                w = np.array([r[wcol] for r in path])
                 for t in TRAVELS:
                     k = int(np.argmin(abs(d - t)))
                     if abs(d[k] - t) > 1e-9 or not np.any(abs(rt - t) < 1e-9):

@@ -164,6 +164,14 @@ std::vector<ColumnSpec> make_columns() {
                "a fixture",
                [](const S& s) { return s.frame_force; }, nullptr,
                [](PathPoint& p, double v) { p.state.frame_force = v; }});
+  c.push_back({PathColumn::kApexMidDeflection, "apex_mid_w_mm", "mm",
+               "the laminate's apex mid-plane displacement along the direction of travel: "
+               "apex_w_mm plus, with the elastic face (`local_support: shell`), the exact "
+               "plate's mid-plane less the shell's Reissner-Mindlin deflection under the contact "
+               "forces (the shell's deflection under a concentrated load carries its shear "
+               "excess; docs/theory/local-indentation.md 6.10); apex_w_mm otherwise",
+               [](const S& s) { return s.apex_mid_deflection; }, nullptr,
+               [](PathPoint& p, double v) { p.state.apex_mid_deflection = v; }});
   ColumnSpec force_error{
       PathColumn::kForceError,
       "force_error_estimate",

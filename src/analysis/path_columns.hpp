@@ -45,6 +45,7 @@ enum class PathColumn {
   kK22ContactMax,
   kErrorEstimate,
   kFrameForce,
+  kApexMidDeflection,
   // The force's estimated discretisation error, only in runs with mesh.error_estimate:
   // companion (analysis/companion_mesh.hpp).
   kForceError,

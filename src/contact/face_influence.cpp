@@ -20,14 +20,18 @@ KappaTail shell_kappa_tail(const SupportKernel& kernel, const Matrix2d& shear_st
   KappaTail t;
   t.t1 = -kernel.thickness() * mean / kernel.far_compliance();
   const double x = 2000;
-  t.t3 = x * x * x * (kernel.kappa_direct(x) - t.t1 / x);
+  // The function transformed: kappa for the top face, 1 + kappa for the mid-plane (no 1/r).
+  const double shift = kernel.spec().surface == PlateSurface::kMid ? 1.0 : 0.0;
+  t.t3 = x * x * x * (kernel.kappa_direct(x) + shift - t.t1 / x);
   return t;
 }
 
 namespace {
 
 HankelJ0 kappa_transform(const SupportKernel& kernel, const KappaTail& tail, double rho_max) {
-  return HankelJ0([&kernel](double x) { return kernel.kappa(x); }, tail.t1, tail.t3, rho_max);
+  const double shift = kernel.spec().surface == PlateSurface::kMid ? 1.0 : 0.0;
+  return HankelJ0([&kernel, shift](double x) { return kernel.kappa(x) + shift; }, tail.t1, tail.t3,
+                  rho_max);
 }
 
 }  // namespace
@@ -42,15 +46,16 @@ FaceInfluence::FaceInfluence(std::shared_ptr<const SupportKernel> kernel, double
           r_max / h_)) {
   SI_REQUIRE(kernel_->spec().support == LocalSupport::kShell,
              "FaceInfluence: the kernel must be of the shell support");
+  if (kernel_->spec().surface == PlateSurface::kMid) boussinesq_ = 0;
 }
 
 double FaceInfluence::point(double r) const {
-  return far_ / (2 * kPi) * (1 / r + transform_(r / h_) / h_);
+  return far_ / (2 * kPi) * (boussinesq_ / r + transform_(r / h_) / h_);
 }
 
 double FaceInfluence::disc(double b) const {
   SI_REQUIRE(b > 0, "FaceInfluence::disc: the radius must be positive");
-  return far_ / (kPi * b * b) * (b + h_ * transform_.moment(b / h_));
+  return far_ / (kPi * b * b) * (boussinesq_ * b + h_ * transform_.moment(b / h_));
 }
 
 }  // namespace si

@@ -12,7 +12,9 @@
 // deflection (kappa ~ t1 / x, t1 = -h <1 / e.G.e> / H_inf), taken by hankel_j0.hpp. A force spread
 // evenly over a disc of radius b moves the disc's centre by
 //     C_b = (2 / b^2) int_0^b r C(r) dr = H_inf / (pi b^2) [b + h int_0^{b/h} rho F(rho) d rho],
-// F the transform of kappa: the coefficient of a node on itself.
+// F the transform of kappa: the coefficient of a node on itself. Of the mid-plane kernel
+// (PlateSurface::kMid: H_mid - H_RM, which vanishes at short waves but for the shear term) the
+// same without Boussinesq's term: C(r) = H_inf / (2 pi h) int (1 + kappa) J0 dx.
 #pragma once
 
 #include <memory>
@@ -37,6 +39,7 @@ class FaceInfluence {
  private:
   std::shared_ptr<const SupportKernel> kernel_;
   double h_ = 0, far_ = 0;
+  double boussinesq_ = 1;  // the 1/r term's weight: 1 for the top face, 0 for the mid-plane
   HankelJ0 transform_;
 };
 

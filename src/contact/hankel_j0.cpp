@@ -12,7 +12,7 @@ namespace {
 constexpr int kRemainderDegree = 96;  // Chebyshev degree of the remainder's transform in rho
 constexpr double kPanel = 0.25;       // Gauss panel in x (8 points: a few per period of J0)
 constexpr int kPanelPoints = 8;
-constexpr int kAnglePoints = 64;  // Gauss points of Bessel's integral over [0, pi/2]
+constexpr int kAnglePoints = 64;         // Gauss points of Bessel's integral over [0, pi/2]
 constexpr double kSamplesPerUnit = 256;  // Hermite samples per unit of rho
 constexpr double kDirectSamples = 4;     // below this many samples, F in closed form
 

@@ -107,7 +107,9 @@ SupportKernel::SupportKernel(const SupportSpec& spec, double y_max, int directio
   std::vector<double> values(xi.size());
   for (std::size_t j = 0; j < xi.size(); ++j) {
     if (xi[j] >= 1)
-      values[j] = 0;
+      values[j] = spec.surface == PlateSurface::kMid && spec.support == LocalSupport::kShell
+                      ? -1  // the mid-plane's compliance vanishes at short waves
+                      : 0;
     else if (xi[j] <= -1)
       values[j] = -1;
     else
@@ -154,8 +156,12 @@ double SupportKernel::mean_compliance(double x) const {
     if (plate) sum += poisson_c2_[j] / x / (1 + bending_ratio_[j] * x * x);
     if (spec_.support == LocalSupport::kShell)
       sum -= reissner_mindlin_compliance(spec_.bending_stiffness, spec_.shear_stiffness, phi, k);
+    const bool mid = spec_.support == LocalSupport::kShell && spec_.surface == PlateSurface::kMid;
     if (x > far_field_) {
-      sum += half_space_normal_compliance(spec_.layers.back().C, phi);
+      // The mid-plane's compliance is exp(-x/2) small there; the top face's is the half-space's.
+      if (!mid) sum += half_space_normal_compliance(spec_.layers.back().C, phi);
+    } else if (mid) {
+      sum += plate_face_compliance(spec_.layers, phi, k).mid;
     } else if (spec_.support == LocalSupport::kShell) {
       sum += plate_top_compliance(spec_.layers, phi, k);
     } else if (plate) {
@@ -177,7 +183,10 @@ double SupportKernel::mean_compliance(double x) const {
 // the O(x^2) rest is ~1e-6 of it and the difference keeps ~9 digits.
 double SupportKernel::shell_long_wave(double phi) const {
   const double x = 1e-3, k = x / thickness_;
-  return -x * (plate_top_compliance(spec_.layers, phi, k) -
+  const double face = spec_.surface == PlateSurface::kMid
+                          ? plate_face_compliance(spec_.layers, phi, k).mid
+                          : plate_top_compliance(spec_.layers, phi, k);
+  return -x * (face -
                reissner_mindlin_compliance(spec_.bending_stiffness, spec_.shear_stiffness, phi, k));
 }
 

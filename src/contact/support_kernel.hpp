@@ -40,12 +40,17 @@
 
 namespace si {
 
+// kShell: which of the exact plate's surfaces the kernel is of (the face the indenter meets, or
+// the mid-plane, for the laminate's mid-surface deflection beside the shell's).
+enum class PlateSurface { kTop, kMid };
+
 struct SupportSpec {
   LocalSupport support = LocalSupport::kBondedBase;  // not kHalfSpace: no kernel for it
   std::vector<LayerStiffness> layers;                // bottom first
   double indenter_compliance = 0;                    // H_i, 1/MPa
   Matrix2d shear_stiffness = Matrix2d::Zero();       // kPlate, kShell: the section's G, N/mm
   Matrix3d bending_stiffness = Matrix3d::Zero();     // kShell: its D, N mm (H_RM)
+  PlateSurface surface = PlateSurface::kTop;         // kShell
 };
 
 // The composite Gauss-Legendre rule on [0, x_max] the kernel's integrals use, with kappa there.

@@ -28,6 +28,10 @@ ElasticFace::ElasticFace(std::shared_ptr<const SupportKernel> kernel, const Shel
     for (const Vector3d& image : images(body.face_points()[a])) box.extend(image);
   }
   if (!box.isEmpty()) r_max = std::max(r_max, box.diagonal().norm());
+  SupportSpec mid = kernel->spec();
+  mid.surface = PlateSurface::kMid;
+  mid_plane_ = std::make_unique<FaceInfluence>(std::make_shared<const SupportKernel>(mid, 1.0),
+                                               1.01 * r_max + 1e-9);
   influence_ = std::make_unique<FaceInfluence>(std::move(kernel), 1.01 * r_max + 1e-9);
 }
 
@@ -63,7 +67,7 @@ double ElasticFace::layer_coupling(const std::vector<int>& nodes, int i, int j) 
   return column(nodes, j)[i];
 }
 
-double ElasticFace::coefficient(int a, int b) const {
+double ElasticFace::coefficient(const FaceInfluence& kernel, int a, int b) const {
   if (a != b && !(in_zone(a) && in_zone(b))) return 0.0;
   const std::vector<Vector3d>& x = body_.face_points();
   // Images closer than this to x_a are x_a itself: the node's own disc, which the coincident
@@ -75,12 +79,12 @@ double ElasticFace::coefficient(int a, int b) const {
     const double r = (x[a] - image).norm();
     if (r <= own)
       ++coincident;
-    else if (r <= influence_->r_max())  // beyond: a candidate added later, far from the contact
-      c += influence_->point(r);
+    else if (r <= kernel.r_max())  // beyond: a candidate added later, far from the contact
+      c += kernel.point(r);
   }
   if (coincident > 0) {
     const double radius = std::sqrt(coincident * shell_.tributary_area(a) / kPi);
-    c += coincident * influence_->disc(radius);
+    c += coincident * kernel.disc(radius);
   }
   return c;
 }
@@ -135,6 +139,9 @@ void ElasticFace::outputs(const TermPoint& p, IndentationState& out) const {
     out.local_energy += model.symmetry_factor * 0.5 * lambda[i] * approach;
     if (nodes[i] == model.apex_node()) out.local_indentation = approach;
   }
+  for (int j = 0; j < rows_.size(); ++j)
+    if (lambda[j] != 0)
+      out.apex_mid_deflection += coefficient(*mid_plane_, model.apex_node(), nodes[j]) * lambda[j];
 }
 
 }  // namespace si

@@ -39,7 +39,8 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   void locate(const SparseMatrix&) override {}
   void residual(const TermPoint&, cont::Vector&) override {}
   void add_jacobian(const TermPoint&, double*, std::vector<ContactJacobianRow>*) override {}
-  // The approach at the apex node and the energy 1/2 lambda^T C lambda (whole shell).
+  // The approach at the apex node, the energy 1/2 lambda^T C lambda (whole shell) and the apex's
+  // mid-plane share sum_j M_apex,j lambda_j (M: the mid-plane kernel's coefficients).
   void outputs(const TermPoint& p, IndentationState& out) const override;
 
   // u = C lambda over the candidates, once per sweep (from C's columns of the pressed nodes).
@@ -56,7 +57,7 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   bool couples_rows() const override { return true; }
 
   // C between mesh nodes a and b, mm/N (0 for a != b unless both lie in the zone).
-  double coefficient(int a, int b) const;
+  double coefficient(int a, int b) const { return coefficient(*influence_, a, b); }
   bool in_zone(int node) const;
 
  private:
@@ -66,6 +67,7 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   };
   // The images of point x in the symmetry planes, x itself first.
   std::vector<Vector3d> images(const Vector3d& x) const;
+  double coefficient(const FaceInfluence& kernel, int a, int b) const;
   // C's column j over `nodes`, computed on first use and kept (the pressed nodes' columns: as
   // many as the fast path keeps of S), after keep_columns_of(nodes), which drops them when the
   // candidates change.
@@ -78,6 +80,7 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   std::vector<Mirror> mirrors_;
   double zone_radius_ = 0;
   std::unique_ptr<FaceInfluence> influence_;
+  std::unique_ptr<FaceInfluence> mid_plane_;  // the same for the mid-plane (PlateSurface::kMid)
   mutable std::vector<int> column_nodes_;
   mutable std::vector<Eigen::VectorXd> columns_;
   mutable Eigen::VectorXd approach_;  // u = C lambda of the last prepare()

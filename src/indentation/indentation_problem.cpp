@@ -215,6 +215,7 @@ void IndentationProblem::quantities(const cont::Vector& z, const std::vector<Nod
                                     double h, IndentationState& out, bool with_probe) const {
   const int apex = model_.apex_node();
   out.apex_deflection = s[apex].u.dot(body_.direction());
+  out.apex_mid_deflection = out.apex_deflection;
   out.apex_curvature = shell_.curvature(s, apex);
   const TermPoint p{z, h, s};
   for (const auto& t : parts_.terms) t->quantities(p, out);

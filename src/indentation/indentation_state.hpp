@@ -18,10 +18,13 @@ struct IndentationState {
   double reaction = 0;         // support reactions along -e, N (equals force at equilibrium), a
                                // support frame's included
   double apex_deflection = 0;  // apex mid-surface displacement along e, mm
-  double contact_radius = 0;   // largest distance from the indenter's axis of a node in contact
-  double contact_area = 0;     // tributary area of the nodes in contact, mm^2
-  int contact_nodes = 0;       // nodes in contact (whole-shell count is not reconstructed)
-  double energy = 0;           // strain energy, N mm
+  // The laminate's apex mid-plane displacement: apex_deflection plus the elastic face's mid-plane
+  // share (elastic_face.hpp), mm.
+  double apex_mid_deflection = 0;
+  double contact_radius = 0;  // largest distance from the indenter's axis of a node in contact
+  double contact_area = 0;    // tributary area of the nodes in contact, mm^2
+  int contact_nodes = 0;      // nodes in contact (whole-shell count is not reconstructed)
+  double energy = 0;          // strain energy, N mm
   // The point's estimated relative energy-norm discretisation error (model/recovery_error.hpp,
   // Zienkiewicz-Zhu).
   double error_estimate = 0;

@@ -361,7 +361,9 @@ TEST(RunCommand, BranchSwitchWithoutABifurcationSaysSo) {
 // Ctrl-C (SIGINT) stops the run after the current point: every converged point is written, the
 // status says the run was stopped, and the message says it was interrupted, not "stopped by the
 // callback" (issue 13 item 15). The signal is sent once the first progress line is on stderr, so
-// the handler is in place; the path is long enough not to end first.
+// the handler is in place; the path is long enough not to end first. The progress line is the
+// one that *starts* with "depth ": the set-up line holds "where depth 0 is" and comes before the
+// handler (waiting for "depth " anywhere sent the signal into that window on a loaded machine).
 TEST(RunCommand, CtrlCStopsTheRunAndSaysItWasInterrupted) {
   const fs::path dir = fresh_dir("run_interrupt");
   const fs::path c =
@@ -383,7 +385,7 @@ TEST(RunCommand, CtrlCStopsTheRunAndSaysItWasInterrupted) {
   const auto start = std::chrono::steady_clock::now();
   bool started = false;
   while (!started && std::chrono::steady_clock::now() - start < std::chrono::seconds(120)) {
-    started = contains(testing::read_file(log), "depth ");
+    started = contains(testing::read_file(log), "\ndepth ");
     if (!started) usleep(10000);
   }
   kill(pid, started ? SIGINT : SIGKILL);

@@ -66,6 +66,7 @@ TEST(ElasticFace, QuarterPlateReportsTheWholePlate) {
   expect_same(q.local_indentation, f.local_indentation, "face approach at the apex");
   expect_same(q.local_energy, f.local_energy, "face energy");
   expect_same(q.energy, f.energy, "strain energy");
+  expect_same(q.apex_mid_deflection, f.apex_mid_deflection, "apex mid-plane deflection");
   EXPECT_GT(f.contact_nodes, 4);  // the contact spreads over rings: the coupling is exercised
   EXPECT_GT(f.local_indentation, 0);
 }
