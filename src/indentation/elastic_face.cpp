@@ -62,8 +62,11 @@ std::vector<int> ElasticFace::coupled(const std::vector<int>& nodes, int i) cons
   return out;
 }
 
+// Called per entry of the Newton rows' block, after prepare() (ContactRows::add_jacobian) has
+// matched the columns to these candidates: only their count is checked here (comparing the
+// candidate lists per entry made the assembly O(n_zone^2 n_candidates)).
 double ElasticFace::layer_coupling(const std::vector<int>& nodes, int i, int j) const {
-  keep_columns_of(nodes);
+  if (columns_.size() != nodes.size()) keep_columns_of(nodes);
   return column(nodes, j)[i];
 }
 
