@@ -94,7 +94,7 @@ TEST(PathColumns, NamesAreUniqueAndEveryColumnIsComputedAndRestored) {
 // companion; a run without any of them has exactly the others.
 TEST(PathColumns, OptionalColumnsOnlyInRunsThatAskForThem) {
   const std::vector<PathColumn>& base = base_columns();
-  EXPECT_EQ(base.back(), PathColumn::kFrameForce);
+  EXPECT_EQ(base.back(), PathColumn::kApexMidDeflection);
   EXPECT_EQ(base.size() + 8, path_columns().size());
   const std::vector<PathColumn> run =
       run_columns({Criterion::kQuadraticDelamination, Criterion::kHashin});
