@@ -44,8 +44,10 @@ IndentationOptions options_of(const IndentationCase& c, int threads,
   if (o.local.kind == LocalLawKind::kElasticFace) {
     // The sphere's chord at the path's depth (a rigid face's contact radius: the shell's own
     // motion only shrinks it), with a margin: the nodes the face couples (elastic_face.hpp).
+    // The linear fast path (linear kinematics, no fixture frame) needs no Newton block: -1.
     const double R = c.indenter.radius, d = std::min(c.path.depth_max, R);
-    o.face_zone_radius = 1.1 * std::sqrt(d * (2 * R - d)) + 0.5;
+    const bool fast = c.kinematics == Kinematics::kLinear && c.fixture.type == FixtureType::kNone;
+    o.face_zone_radius = fast ? -1.0 : 1.1 * std::sqrt(d * (2 * R - d)) + 0.5;
   }
   if (c.fixture.type == FixtureType::kAstmD6264Backed && o.local.kind == LocalLawKind::kNone)
     throw_input(

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <string>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -11,7 +12,6 @@ namespace si {
 ElasticFace::ElasticFace(std::shared_ptr<const SupportKernel> kernel, const ShellPart& shell,
                          const ContactBody& body, const ContactRows& rows, double zone_radius)
     : shell_(shell), body_(body), rows_(rows), zone_radius_(zone_radius) {
-  SI_REQUIRE(zone_radius >= 0, "ElasticFace: a negative zone radius");
   const ShellModel& model = shell.model();
   for (const Support& s : model.supports)
     if (s.kind == SupportKind::kSymmetryPlane) {
@@ -33,6 +33,18 @@ ElasticFace::ElasticFace(std::shared_ptr<const SupportKernel> kernel, const Shel
   mid_plane_ = std::make_unique<FaceInfluence>(std::make_shared<const SupportKernel>(mid, 1.0),
                                                1.01 * r_max + 1e-9);
   influence_ = std::make_unique<FaceInfluence>(std::move(kernel), 1.01 * r_max + 1e-9);
+  if (zone_radius_ >= 0) {
+    int zone = 0;
+    for (int a : body.reachable()) zone += in_zone(a);
+    if (zone > kMaxZoneNodes)
+      throw_input("the elastic face's Newton block would couple " + std::to_string(zone) +
+                      " contact nodes (within " + std::to_string(zone_radius_) +
+                      " mm of the first touch, the sphere's chord at depth_max), more than " +
+                      std::to_string(kMaxZoneNodes) +
+                      ": use linear kinematics (the fast path has no block), a coarser apex "
+                      "mesh or a smaller path.depth_max",
+                  Where{"", "contact.local_support", "shell", 0});
+  }
 }
 
 std::vector<Vector3d> ElasticFace::images(const Vector3d& x) const {
@@ -49,14 +61,14 @@ std::vector<Vector3d> ElasticFace::images(const Vector3d& x) const {
 }
 
 bool ElasticFace::in_zone(int node) const {
-  if (zone_radius_ == 0) return true;
+  if (zone_radius_ <= 0) return true;
   const std::vector<Vector3d>& x = body_.face_points();
   return (x[node] - x[body_.first_node()]).norm() <= zone_radius_;
 }
 
 std::vector<int> ElasticFace::coupled(const std::vector<int>& nodes, int i) const {
   std::vector<int> out;
-  if (!in_zone(nodes[i])) return out;
+  if (zone_radius_ < 0 || !in_zone(nodes[i])) return out;
   for (int j = 0; j < static_cast<int>(nodes.size()); ++j)
     if (j != i && in_zone(nodes[j])) out.push_back(j);
   return out;

@@ -29,8 +29,12 @@ namespace si {
 
 class ElasticFace final : public ContactTerm, public LocalApproach {
  public:
+  static constexpr int kMaxZoneNodes = 3000;  // 9e6 block entries, ~0.2 GB with the LU's
   // The influence table reaches the largest distance between the body's reachable nodes and
-  // their images. Keeps references to the shell, the body and the rows.
+  // their images. zone_radius < 0: every pair coupled and no Newton block (the linear fast path
+  // only). Throws an input error naming contact.local_support if the zone holds more than
+  // kMaxZoneNodes reachable nodes (the block's memory, n^2 entries, and its LU). Keeps
+  // references to the shell, the body and the rows.
   ElasticFace(std::shared_ptr<const SupportKernel> kernel, const ShellPart& shell,
               const ContactBody& body, const ContactRows& rows, double zone_radius = 0);
 
