@@ -97,7 +97,8 @@ IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolve
       std::snprintf(buf, sizeof buf, "[%g, %g, %g]", v.x(), v.y(), v.z());
       return std::string(buf);
     };
-    if (e.where().key.rfind("fixture", 0) == 0)  // the fixture's frame or its contact law
+    // The fixture's frame or its contact law; the local law (the elastic face's block).
+    if (e.where().key.rfind("fixture", 0) == 0 || e.where().key.rfind("contact.", 0) == 0)
       throw Error(e.kind(), e.reason(), Where{spec.file, e.where().key, e.where().value, 0});
     if (e.where().key == "indenter.direction")  // the direction itself is wrong, not the pose
       throw Error(e.kind(), e.reason(), Where{spec.file, e.where().key, e.where().value, 0});
