@@ -48,7 +48,6 @@ class FaceInfluence {
 struct KappaTail {
   double t1 = 0, t3 = 0;
 };
-KappaTail shell_kappa_tail(const SupportKernel& kernel, const Matrix2d& shear_stiffness,
-                           int directions);
+KappaTail shell_kappa_tail(const SupportKernel& kernel);
 
 }  // namespace si

@@ -28,11 +28,12 @@ ElasticFace::ElasticFace(std::shared_ptr<const SupportKernel> kernel, const Shel
     for (const Vector3d& image : images(body.face_points()[a])) box.extend(image);
   }
   if (!box.isEmpty()) r_max = std::max(r_max, box.diagonal().norm());
+  const double reach = 1.01 * r_max + 1e-9;
   SupportSpec mid = kernel->spec();
   mid.surface = PlateSurface::kMid;
-  mid_plane_ = std::make_unique<FaceInfluence>(std::make_shared<const SupportKernel>(mid, 1.0),
-                                               1.01 * r_max + 1e-9);
-  influence_ = std::make_unique<FaceInfluence>(std::move(kernel), 1.01 * r_max + 1e-9);
+  mid_plane_ =
+      std::make_unique<FaceInfluence>(std::make_shared<const SupportKernel>(mid, 1.0), reach);
+  influence_ = std::make_unique<FaceInfluence>(std::move(kernel), reach);
   if (zone_radius_ >= 0) {
     int zone = 0;
     for (int a : body.reachable()) zone += in_zone(a);

@@ -86,7 +86,7 @@ TEST(FaceInfluenceKernel, SeriesMatchesTransferMatricesAndLimits) {
   EXPECT_NEAR(k.kappa_direct(0.5), -1, 5e-2);
   EXPECT_GT(k.kappa_direct(0.5), -1);  // the face is more compliant than the shell: C > 0
   // Short waves: kappa ~ t1 / x, t1 = -h <1 / e.G.e> / H_inf.
-  const KappaTail tail = shell_kappa_tail(k, k.spec().shear_stiffness, k.directions());
+  const KappaTail tail = shell_kappa_tail(k);
   const Matrix2d& G = k.spec().shear_stiffness;  // [0/90]2S: G12 = 0, so <1 / e.G.e> in closed
   EXPECT_NEAR(G(0, 1), 0, 1e-9 * G(0, 0));       // form is 1 / sqrt(G11 G22)
   EXPECT_NEAR(tail.t1, -3.8 / std::sqrt(G(0, 0) * G(1, 1)) / k.far_compliance(),
