@@ -17,8 +17,10 @@
 namespace si {
 namespace {
 
+// support_frame: the model has a fixture's frame (ShellModel::frame_nodes), whose contact takes
+// the Newton paths (run_indentation_path's routing).
 IndentationOptions options_of(const IndentationCase& c, int threads,
-                              JacobianSolverKind linear_solver) {
+                              JacobianSolverKind linear_solver, bool support_frame) {
   IndentationOptions o;
   o.linear_solver = linear_solver;
   o.contact_offset = contact_face_offset(c);
@@ -44,9 +46,10 @@ IndentationOptions options_of(const IndentationCase& c, int threads,
   if (o.local.kind == LocalLawKind::kElasticFace) {
     // The sphere's chord at the path's depth (a rigid face's contact radius: the shell's own
     // motion only shrinks it), with a margin: the nodes the face couples (elastic_face.hpp).
-    // The linear fast path (linear kinematics, no fixture frame) needs no Newton block: -1.
+    // The linear fast path (linear kinematics, no support frame: run_indentation_path) needs no
+    // Newton block: -1.
     const double R = c.indenter.radius, d = std::min(c.path.depth_max, R);
-    const bool fast = c.kinematics == Kinematics::kLinear && c.fixture.type == FixtureType::kNone;
+    const bool fast = c.kinematics == Kinematics::kLinear && !support_frame;
     o.face_zone_radius = fast ? -1.0 : 1.1 * std::sqrt(d * (2 * R - d)) + 0.5;
   }
   if (c.fixture.type == FixtureType::kAstmD6264Backed && o.local.kind == LocalLawKind::kNone)
@@ -89,8 +92,9 @@ IndentationSetup::IndentationSetup(IndentationCase c, int threads, JacobianSolve
     throw e.within(Where{spec.file, "indenter", "", 0});
   }
   try {
-    problem = std::make_unique<IndentationProblem>(model, *indenter, pose.direction,
-                                                   options_of(spec, threads, linear_solver));
+    problem = std::make_unique<IndentationProblem>(
+        model, *indenter, pose.direction,
+        options_of(spec, threads, linear_solver, !model.frame_nodes.empty()));
   } catch (const Error& e) {
     const auto text = [](const Vector3d& v) {
       char buf[96];
