@@ -68,6 +68,7 @@ void ContactJacobianSolver::map_jacobian(const SparseMatrix& J) {
           static_cast<int>(std::lower_bound(begin, end, H_.innerIndexPtr()[k]) - J.innerIndexPtr());
   }
   analyzed_outer_.assign(J.outerIndexPtr(), J.outerIndexPtr() + J.outerSize() + 1);
+  rows_coupled_ = CoupledRows::any(J, num_shell_, static_cast<int>(J.rows()) - num_shell_);
   row_slots_.clear();
   lu_.reset();
 }
@@ -147,6 +148,8 @@ bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& 
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;
   }
+  coupled_.clear();
+  if (rows_coupled_ && !coupled_.build(*J_, num_shell_, condensed, *cholesky_)) return false;
   pre_rows_ = condensed;
   pre_rotations_ = rotations_;
   has_preconditioner_ = true;
@@ -156,7 +159,8 @@ bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& 
 }
 
 bool ContactJacobianSolver::refresh_penalized(const std::vector<int>& rows) {
-  if (J_ == nullptr || use_lu_ || border_) return false;
+  // Coupled rows (a compliant face) are no constraints to penalise.
+  if (J_ == nullptr || use_lu_ || border_ || rows_coupled_) return false;
   // Weight 0 (b = 0: uncondensed) on every row but the listed ones, kappa / floor on those: the
   // floored a of a fully active row (factorize()), whatever its b.
   std::vector<ContactJacobianRow> condensed = rows_;
@@ -273,6 +277,7 @@ void ContactJacobianSolver::forget_preconditioner() {
   has_preconditioner_ = false;
   preconditioner_age_ = 0;
   last_products_ = 0;
+  coupled_.clear();
   pre_rotations_.clear();
   pre_rows_.clear();
 }
@@ -294,24 +299,30 @@ void ContactJacobianSolver::apply_preconditioner(const Eigen::VectorXd& in,
 
 void ContactJacobianSolver::apply_condensed(const Eigen::VectorXd& in, Eigen::VectorXd& out) const {
   const int nf = num_shell_;
+  const int nr = static_cast<int>(pre_rows_.size());
+  out.resize(in.size());
+  // dlambda = M^-1 (r_lambda - B G~^T dx) with the shell's dx = S^-1 (T^T r_x + G~ M^-1 r_lambda)
+  // (M diagonal but for the coupled rows, coupled_rows.hpp).
+  coupled_.solve_rows(pre_rows_, in.data() + nf, out.data() + nf);
   Eigen::VectorXd r = in.head(nf);
   transpose_transform(pre_rotations_, r);
-  for (std::size_t i = 0; i < pre_rows_.size(); ++i) {
-    const ContactJacobianRow& row = pre_rows_[i];
-    const double s = in[nf + static_cast<int>(i)] / row.a;
+  for (int i = 0; i < nr; ++i) {
+    const ContactJacobianRow& row = pre_rows_[static_cast<std::size_t>(i)];
     for (int k = 0; k < 5; ++k)
-      if (row.eq[k] >= 0) r[row.eq[k]] += row.gradient[k] * s;
+      if (row.eq[k] >= 0) r[row.eq[k]] += row.gradient[k] * out[nf + i];
   }
-  out.resize(in.size());
-  out.head(nf) = cholesky_->solve(r);
-  for (std::size_t i = 0; i < pre_rows_.size(); ++i) {
-    const ContactJacobianRow& row = pre_rows_[i];
+  Eigen::VectorXd y = cholesky_->solve(r);
+  coupled_.correct_shell(y);
+  out.head(nf) = y;
+  Eigen::VectorXd s(nr);
+  for (int i = 0; i < nr; ++i) {
+    const ContactJacobianRow& row = pre_rows_[static_cast<std::size_t>(i)];
     double gy = 0.0;
     for (int k = 0; k < 5; ++k)
-      if (row.eq[k] >= 0) gy += row.gradient[k] * out[row.eq[k]];
-    const int m = nf + static_cast<int>(i);
-    out[m] = (in[m] - row.b * gy) / row.a;
+      if (row.eq[k] >= 0) gy += row.gradient[k] * y[row.eq[k]];
+    s[i] = in[nf + i] - row.b * gy;
   }
+  coupled_.solve_rows(pre_rows_, s.data(), out.data() + nf);
 }
 
 Eigen::VectorXd ContactJacobianSolver::solve(const Eigen::VectorXd& rhs) {

@@ -14,6 +14,9 @@
 // converge, the solve falls back to an LU of J (the `fallback` solver, UMFPACK by default).
 // Candidates appended to the set (same shell block) keep the factor: their rows enter the
 // preconditioner uncondensed until the next refresh.
+// Rows that couple each other (Da not diagonal: the elastic face's compliance over its zone)
+// are eliminated exactly: the preconditioner adds a Woodbury correction over the coupled rows to
+// the factor of H (coupled_rows.hpp).
 // A border (one trailing unknown whose row and column couple the contact rows, the power-law
 // local contact's approach alpha, power_law_approach.hpp) stays in J for GMRES; the
 // preconditioner eliminates it by block elimination through the condensed factor P,
@@ -27,22 +30,13 @@
 #include <string>
 #include <vector>
 
+#include "indentation/contact_jacobian_row.hpp"
+#include "indentation/coupled_rows.hpp"
 #include "model/shell_chart.hpp"
 #include "solvers/gmres.hpp"
 #include "solvers/linear_solver.hpp"
 
 namespace si {
-
-// One complementarity row of J: the candidate's equations (its node's 3 translations and 2
-// rotations, -1 if prescribed), its gap gradient G_i on those dofs (spatial increments, before
-// the chart), and the derivatives of its NCP row: a = d phi / d lambda, b = kappa d phi / d(kappa
-// g).
-struct ContactJacobianRow {
-  std::array<int, 5> eq{-1, -1, -1, -1, -1};
-  std::array<double, 5> gradient{0, 0, 0, 0, 0};
-  double a = 1.0;
-  double b = 0.0;
-};
 
 struct ContactJacobianCounters {
   long cholesky = 0;         // factorizations of H
@@ -127,6 +121,10 @@ class ContactJacobianSolver {
   std::vector<ShellChart::RotationBlock> rotations_, pre_rotations_;
   std::vector<ContactJacobianRow> rows_, pre_rows_;
   bool has_preconditioner_ = false;
+  // Whether J's contact rows couple each other (its pattern), and their exact elimination in
+  // the preconditioner made with the current factor.
+  bool rows_coupled_ = false;
+  CoupledRows coupled_;
   int preconditioner_age_ = 0;  // factorize() calls since the Cholesky factor was made
   int last_products_ = 0;       // GMRES products of the last solve
   GmresSettings gmres_;

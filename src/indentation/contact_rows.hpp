@@ -110,7 +110,6 @@ class ContactRows : public ContactTerm {
   // A non-local law's entries of candidate i's row in the other multipliers' columns:
   // d_b kappa d layer_i / d lambda_j.
   void add_layer_coupling(int i, const NcpValue& phi, double* J) const;
-  bool layer_couples_rows() const { return approach_->couples_rows(); }
 
   const ShellPart& shell() const { return setting_.shell; }
   const ContactBody& body() const { return setting_.body; }

@@ -63,8 +63,9 @@ class ContactTerm {
                             std::vector<ContactJacobianRow>* condensed) = 0;
   // Its rows of dF/dh (out is zero on entry).
   virtual void residual_p(const TermPoint&, cont::Vector&) {}
-  // Whether its rows can join the Krylov solver's condensed preconditioner (rows on one node's
-  // dofs, no coupling to other rows); otherwise the problem uses a direct LU.
+  // Whether its rows can join the Krylov solver's condensed preconditioner (each row's gradient
+  // on one node's dofs; rows may couple each other's multipliers: coupled_rows.hpp); otherwise
+  // the problem uses a direct LU.
   virtual bool condensable() const { return false; }
   // Whether its one unknown, whose row and column couple every contact row (a power law's
   // alpha), may instead border the Krylov solver's matrix: GMRES keeps it and the preconditioner

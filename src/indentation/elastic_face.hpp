@@ -8,15 +8,16 @@
 //
 // Linear in the multipliers with no unknown of its own: the linear fast path adds C's columns to
 // the Schur complement (linear_indentation.hpp); the Newton paths' rows gain C's entries in the
-// other multipliers' columns (coupled(), layer_coupling()), a dense block over the zone, and the
-// direct LU. The zone: the candidates within `zone_radius` of the first touch's face point (0:
-// all), which the runs make the sphere's chord at the path's depth, an upper bound of the
-// contact radius. Outside it a node's approach is its own disc's alone: C_ij = 0 for i != j
-// unless both lie in the zone, so that the Newton paths and the fast path solve one model
-// wherever the contact stays in the zone. The runs give the fast path zone_radius -1: every pair
-// coupled and no block (it needs none, and a 0-10 mm zone on a fine mesh is 1e8 entries). The
-// coefficients are those of the reference configuration (the face's kernel is a small-strain
-// one; with nonlinear kinematics the contact patch stays small against the cap).
+// other multipliers' columns (coupled(), layer_coupling()), a dense block over the zone, which
+// the Krylov solver's preconditioner eliminates over the pressed rows (coupled_rows.hpp). The zone:
+// the candidates within `zone_radius` of the first touch's face point (0: all), which the runs make
+// the sphere's chord at the path's depth, an upper bound of the contact radius. Outside it a node's
+// approach is its own disc's alone: C_ij = 0 for i != j unless both lie in the zone, so that the
+// Newton paths and the fast path solve one model wherever the contact stays in the zone. The runs
+// give the fast path zone_radius -1: every pair coupled and no block (it needs none, and a 0-10 mm
+// zone on a fine mesh is 1e8 entries). The coefficients are those of the reference configuration
+// (the face's kernel is a small-strain one; with nonlinear kinematics the contact patch stays small
+// against the cap).
 #pragma once
 
 #include <memory>
@@ -31,7 +32,7 @@ namespace si {
 
 class ElasticFace final : public ContactTerm, public LocalApproach {
  public:
-  static constexpr int kMaxZoneNodes = 3000;  // 9e6 block entries, ~0.2 GB with the LU's
+  static constexpr int kMaxZoneNodes = 3000;  // 9e6 block entries (~0.1 GB in J)
   // The influence table reaches the largest distance between the body's reachable nodes and
   // their images. zone_radius < 0: every pair coupled and no Newton block (the linear fast path
   // only). Throws an input error naming contact.local_support if the zone holds more than
@@ -45,6 +46,9 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   void locate(const SparseMatrix&) override {}
   void residual(const TermPoint&, cont::Vector&) override {}
   void add_jacobian(const TermPoint&, double*, std::vector<ContactJacobianRow>*) override {}
+  // No rows of its own; the rows' couplings are eliminated by the preconditioner
+  // (coupled_rows.hpp).
+  bool condensable() const override { return true; }
   // The approach at the apex node, the energy 1/2 lambda^T C lambda (whole shell) and the apex's
   // mid-plane share sum_j M_apex,j lambda_j (M: the mid-plane kernel's coefficients).
   void outputs(const TermPoint& p, IndentationState& out) const override;
@@ -60,10 +64,11 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
                              Eigen::VectorXd& column) const override;
   std::vector<int> coupled(const std::vector<int>& nodes, int i) const override;
   double layer_coupling(const std::vector<int>& nodes, int i, int j) const override;
-  bool couples_rows() const override { return true; }
 
   // C between mesh nodes a and b, mm/N (0 for a != b unless both lie in the zone).
-  double coefficient(int a, int b) const { return coefficient(*influence_, a, b); }
+  double coefficient(int a, int b) const {
+    return a == b ? own(a) : coefficient(*influence_, a, b);
+  }
   bool in_zone(int node) const;
 
  private:
@@ -74,6 +79,9 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   // The images of point x in the symmetry planes, x itself first.
   std::vector<Vector3d> images(const Vector3d& x) const;
   double coefficient(const FaceInfluence& kernel, int a, int b) const;
+  // C_aa, computed on first use and kept: every Newton row's diagonal asks for it (its disc is a
+  // quadrature of the transform).
+  double own(int node) const;
   // C's column j over `nodes`, computed on first use and kept (the pressed nodes' columns: as
   // many as the fast path keeps of S), after keep_columns_of(nodes), which drops them when the
   // candidates change.
@@ -87,6 +95,7 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   double zone_radius_ = 0;
   std::unique_ptr<FaceInfluence> influence_;
   std::unique_ptr<FaceInfluence> mid_plane_;  // the same for the mid-plane (PlateSurface::kMid)
+  mutable std::vector<double> own_;           // per mesh node, NaN until asked
   mutable std::vector<int> column_nodes_;
   mutable std::vector<Eigen::VectorXd> columns_;
   mutable Eigen::VectorXd approach_;  // u = C lambda of the last prepare()

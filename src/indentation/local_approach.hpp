@@ -45,8 +45,6 @@ class LocalApproach {
   virtual double layer_coupling(const std::vector<int>& /*nodes*/, int /*i*/, int /*j*/) const {
     return 0.0;
   }
-  // Whether it couples rows at all (the rows are then not condensable on their nodes).
-  virtual bool couples_rows() const { return false; }
   // The position of alpha in z (the dent's column in the contact rows), -1 without one.
   virtual int alpha_index() const { return -1; }
   // A power law's start is regular only at the kink of the NCP function: a gap within

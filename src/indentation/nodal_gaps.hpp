@@ -33,8 +33,9 @@ class NodalGaps final : public ContactRows {
   void add_shell_force(const TermPoint& p, cont::Vector& r_free) override;
   void add_jacobian(const TermPoint& p, double* J,
                     std::vector<ContactJacobianRow>* condensed) override;
-  // The rows condense on their nodes unless the F-bar term or a non-local law spans more.
-  bool condensable() const override { return !thickening_ && !layer_couples_rows(); }
+  // The rows condense on their nodes unless the F-bar term spans more (a non-local law's
+  // couplings are eliminated by the preconditioner: coupled_rows.hpp).
+  bool condensable() const override { return !thickening_; }
   SparseMatrix gap_matrix(const TermPoint& reference) const override;
 
  private:

@@ -61,4 +61,11 @@ Eigen::VectorXd CholmodSolver::solve(const Eigen::VectorXd& b) const {
   return x;
 }
 
+Eigen::MatrixXd CholmodSolver::solve_columns(const Eigen::MatrixXd& B) const {
+  const SerialOpenMpRegion serial;
+  Eigen::MatrixXd X = impl_->solve(B);  // one cholmod_solve over all columns
+  if (impl_->info() != Eigen::Success) throw_numerical("CHOLMOD solve failed");
+  return X;
+}
+
 }  // namespace si

@@ -20,6 +20,7 @@ class CholmodSolver : public LinearSolver {
   void analyze(const SparseMatrix& A) override;
   void factorize(const SparseMatrix& A) override;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const override;
+  Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) const override;
   double rcond() const override { return rcond_; }
 
  private:

@@ -21,6 +21,12 @@ std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind) {
   throw Error(ErrorKind::kInternal, "make_linear_solver: unknown solver kind");
 }
 
+Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& B) const {
+  Eigen::MatrixXd X(B.rows(), B.cols());
+  for (Eigen::Index c = 0; c < B.cols(); ++c) X.col(c) = solve(B.col(c));
+  return X;
+}
+
 std::string singular_matrix_message(const std::string& solver, double rcond) {
   std::ostringstream os;
   os << "stiffness matrix is singular (" << solver << ", pivot ratio " << rcond

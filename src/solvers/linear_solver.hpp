@@ -32,6 +32,8 @@ class LinearSolver {
   // Same pattern as at analyze(). Throws a numerical error if A is singular / not SPD.
   virtual void factorize(const SparseMatrix& A) = 0;
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
+  // X = A^-1 B for several right-hand sides at once (a supernodal solver blocks them: BLAS-3).
+  virtual Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) const;
   // Reciprocal condition estimate of the last factorization (ratio of extreme pivots).
   virtual double rcond() const = 0;
 };

@@ -1,0 +1,123 @@
+#include "indentation/coupled_rows.hpp"
+
+namespace si {
+namespace {
+
+// Z holds num_shell x |R| doubles: beyond 5e7 (400 MB) the block is left to GMRES.
+constexpr double kMaxCoupledEntries = 5e7;
+// Below this reciprocal condition estimate M_RR or I + G~^T Z W is taken as singular (as the
+// sparse solvers' kSingularRcond).
+constexpr double kSingularBlock = 1e-14;
+
+}  // namespace
+
+void CoupledRows::clear() {
+  index_.clear();
+  place_.clear();
+  outside_.clear();
+  gradients_.resize(0, 0);
+  z_.resize(0, 0);
+  w_.resize(0, 0);
+}
+
+bool CoupledRows::any(const SparseMatrix& J, int num_shell, int num_rows) {
+  for (int c = 0; c < num_rows; ++c)
+    for (SparseMatrix::InnerIterator it(J, num_shell + c); it; ++it) {
+      const Eigen::Index i = it.row() - num_shell;
+      if (i >= 0 && i < num_rows && i != c) return true;
+    }
+  return false;
+}
+
+bool CoupledRows::build(const SparseMatrix& J, int num_shell,
+                        const std::vector<ContactJacobianRow>& rows, const LinearSolver& shell) {
+  clear();
+  const int nr = static_cast<int>(rows.size());
+  struct Entry {
+    int i, j;
+    double value;
+  };
+  std::vector<Entry> entries;  // M's nonzero off-diagonals
+  std::vector<char> in_r(rows.size(), 0);
+  for (int j = 0; j < nr; ++j)
+    for (SparseMatrix::InnerIterator it(J, num_shell + j); it; ++it) {
+      const int i = static_cast<int>(it.row()) - num_shell;
+      if (i < 0 || i >= nr || i == j || it.value() == 0.0) continue;
+      entries.push_back({i, j, it.value()});
+      in_r[i] = 1;
+    }
+  if (entries.empty()) return true;
+  for (const Entry& e : entries)
+    if (rows[e.j].b != 0.0) in_r[e.j] = 1;
+  place_.assign(rows.size(), -1);
+  for (int i = 0; i < nr; ++i)
+    if (in_r[i]) {
+      place_[i] = static_cast<int>(index_.size());
+      index_.push_back(i);
+    }
+  const int r = static_cast<int>(index_.size());
+  if (static_cast<double>(num_shell) * r > kMaxCoupledEntries) {
+    clear();
+    return true;
+  }
+
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(r, r);
+  Eigen::VectorXd b(r), b_over_a(r);
+  for (int k = 0; k < r; ++k) {
+    const ContactJacobianRow& row = rows[index_[k]];
+    M(k, k) = row.a;
+    b[k] = row.b;
+    b_over_a[k] = row.b / row.a;
+  }
+  for (const Entry& e : entries) {
+    const int pi = place_[e.i], pj = place_[e.j];
+    if (pj >= 0)
+      M(pi, pj) = e.value;
+    else
+      outside_.push_back({pi, e.j, e.value});
+  }
+  block_.compute(M);
+  if (!(block_.rcond() > kSingularBlock)) {
+    clear();
+    return false;
+  }
+  w_ = block_.solve(Eigen::MatrixXd(b.asDiagonal()));
+  w_.diagonal() -= b_over_a;
+
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int k = 0; k < r; ++k) {
+    const ContactJacobianRow& row = rows[index_[k]];
+    for (int l = 0; l < 5; ++l)
+      if (row.eq[l] >= 0) t.emplace_back(row.eq[l], k, row.gradient[l]);
+  }
+  gradients_.resize(num_shell, r);
+  gradients_.setFromTriplets(t.begin(), t.end());
+  z_ = shell.solve_columns(Eigen::MatrixXd(gradients_));
+  const Eigen::MatrixXd K =
+      Eigen::MatrixXd::Identity(r, r) + Eigen::MatrixXd(gradients_.transpose() * z_) * w_;
+  woodbury_.compute(K);
+  if (!(woodbury_.rcond() > kSingularBlock)) {
+    clear();
+    return false;
+  }
+  return true;
+}
+
+void CoupledRows::solve_rows(const std::vector<ContactJacobianRow>& rows, const double* r,
+                             double* t) const {
+  Eigen::VectorXd v(static_cast<Eigen::Index>(index_.size()));
+  for (int k = 0; k < static_cast<int>(index_.size()); ++k) v[k] = r[index_[k]];
+  for (std::size_t i = 0; i < rows.size(); ++i) t[i] = r[i] / rows[i].a;
+  if (empty()) return;
+  for (const Coupling& c : outside_) v[c.row] -= c.value * t[c.column];
+  v = block_.solve(v);
+  for (int k = 0; k < static_cast<int>(index_.size()); ++k) t[index_[k]] = v[k];
+}
+
+void CoupledRows::correct_shell(Eigen::VectorXd& y) const {
+  if (empty()) return;
+  const Eigen::VectorXd u = gradients_.transpose() * y;
+  y -= z_ * (w_ * woodbury_.solve(u));
+}
+
+}  // namespace si

@@ -1,0 +1,64 @@
+// Contact rows that read each other's multipliers (the elastic face: each gap carries
+// sum_j C_ij lambda_j over its zone, elastic_face.hpp), eliminated exactly inside the condensed
+// preconditioner of contact_jacobian_solver.hpp. With M the contact block of J (the rows'
+// diagonals a_i and their couplings) and B = diag(b), eliminating the rows,
+//     dlambda = M^-1 (r_lambda - B G~^T dx),
+// leaves the shell with
+//     S = H0 + G~_R W G~_R^T,   W = (M_RR)^-1 B_R - diag(b_R / a_R),
+// where H0 is the factored matrix that condenses every row on its own diagonal and R the rows
+// with couplings together with the rows they read that have b != 0 (the other rows' b vanish
+// in M^-1 B, so off R the condensation on the diagonal is exact). S is solved by Woodbury's
+// identity (Golub & Van Loan 2013, 2.1.4),
+//     S^-1 = H0^-1 - Z W (I + G~_R^T Z W)^-1 G~_R^T H0^-1,   Z = H0^-1 G~_R,
+// Z being |R| solves with H0's factor made as one blocked solve. Why: R is the contact patch,
+// tens to hundreds of rows, while an LU of the whole J fills the zone's dense block into the
+// shell's (measured on the paper's cap, 0 -> 10 mm: 8.8x the time of the same path without the
+// law; docs/performance.md).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/sparse.hpp"
+#include "indentation/contact_jacobian_row.hpp"
+#include "solvers/linear_solver.hpp"
+
+namespace si {
+
+class CoupledRows {
+ public:
+  // J: num_shell shell rows first, then one row per entry of `rows` (a floored, gradients in
+  // chart coordinates, as the preconditioner condenses them). shell: H0's factor. Returns false
+  // if M_RR or the Woodbury matrix is singular (the caller then factors J itself); a block too
+  // large to keep (kMaxCoupledEntries) is left out (empty(): the rows condense on their
+  // diagonals and GMRES carries the couplings).
+  bool build(const SparseMatrix& J, int num_shell, const std::vector<ContactJacobianRow>& rows,
+             const LinearSolver& shell);
+  bool empty() const { return index_.empty(); }
+  void clear();
+  // t = M^-1 r over the contact rows (rows appended since build(): b = 0, their diagonal).
+  void solve_rows(const std::vector<ContactJacobianRow>& rows, const double* r, double* t) const;
+  // y = H0^-1 rhs on entry, S^-1 rhs on exit.
+  void correct_shell(Eigen::VectorXd& y) const;
+
+  // Whether J's contact block couples any two of its num_rows rows (its pattern).
+  static bool any(const SparseMatrix& J, int num_shell, int num_rows);
+
+ private:
+  struct Coupling {
+    int row;     // place in R
+    int column;  // contact row outside R
+    double value;
+  };
+  std::vector<int> index_;                      // R: contact rows
+  std::vector<int> place_;                      // per contact row at build(): its place in R, or -1
+  std::vector<Coupling> outside_;               // M_RN
+  Eigen::PartialPivLU<Eigen::MatrixXd> block_;  // M_RR
+  SparseMatrix gradients_;                      // G~_R: num_shell x |R|
+  Eigen::MatrixXd z_;                           // Z
+  Eigen::MatrixXd w_;                           // W
+  Eigen::PartialPivLU<Eigen::MatrixXd> woodbury_;  // I + G~_R^T Z W
+};
+
+}  // namespace si
