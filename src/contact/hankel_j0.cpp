@@ -39,7 +39,7 @@ Tails tails(double rho) {
 
 HankelJ0::HankelJ0(const std::function<double(double)>& f, double t1, double t3, double rho_max,
                    double x_max)
-    : t1_(t1), s3_(t3 + t1 / 2), rho_max_(rho_max) {
+    : t1_(t1), s3_(t3 + t1 / 2), rho_max_(rho_max), moment_rule_(gauss_legendre(24)) {
   SI_REQUIRE(rho_max > 0 && x_max > 0, "HankelJ0: rho_max and x_max must be positive");
   const GaussRule g = gauss_legendre(kPanelPoints);
   const int panels = static_cast<int>(std::ceil(x_max / kPanel));
@@ -110,7 +110,7 @@ double HankelJ0::operator()(double rho) const {
 double HankelJ0::moment(double b) const {
   SI_REQUIRE(b >= 0 && b <= rho_max_ * (1 + 1e-12), "HankelJ0::moment: b out of [0, rho_max]");
   if (b == 0) return 0;
-  const GaussRule g = gauss_legendre(24);
+  const GaussRule& g = moment_rule_;
   double sum = 0;
   for (std::size_t i = 0; i < g.points.size(); ++i) {
     const double s = (g.points[i] + 1) / 2;

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/chebyshev.hpp"
+#include "section/gauss_legendre.hpp"
 
 namespace si {
 
@@ -40,6 +41,7 @@ class HankelJ0 {
   double direct(double rho) const;  // closed forms plus the remainder's series
   double t1_ = 0, s3_ = 0, rho_max_ = 0;
   ChebyshevSeries remainder_;
+  GaussRule moment_rule_;  // moment()'s, made once (each node's own disc asks for one)
   double step_ = 0;
   // F + t1 ln rho and its slope at rho_j = j step_, j >= 1 (index 0 unused).
   std::vector<double> value_, slope_;

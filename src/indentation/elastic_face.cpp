@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/constants.hpp"
@@ -102,6 +103,14 @@ double ElasticFace::coefficient(const FaceInfluence& kernel, int a, int b) const
     const double radius = std::sqrt(coincident * shell_.tributary_area(a) / kPi);
     c += coincident * kernel.disc(radius);
   }
+  return c;
+}
+
+double ElasticFace::own(int node) const {
+  if (own_.empty())
+    own_.assign(shell_.model().mesh.nodes.size(), std::numeric_limits<double>::quiet_NaN());
+  double& c = own_[node];
+  if (std::isnan(c)) c = coefficient(*influence_, node, node);
   return c;
 }
 
