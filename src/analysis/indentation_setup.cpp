@@ -50,7 +50,7 @@ IndentationOptions options_of(const IndentationCase& c, int threads,
     // Newton block: -1.
     const double R = c.indenter.radius, d = std::min(c.path.depth_max, R);
     const bool fast = c.kinematics == Kinematics::kLinear && !support_frame;
-    o.face_zone_radius = fast ? -1.0 : 1.1 * std::sqrt(d * (2 * R - d)) + 0.5;
+    o.face_zone_bound = fast ? -1.0 : 1.1 * std::sqrt(d * (2 * R - d)) + 0.5;
   }
   if (c.fixture.type == FixtureType::kAstmD6264Backed && o.local.kind == LocalLawKind::kNone)
     throw_input(

@@ -9,8 +9,6 @@
 
 namespace si {
 
-const LocalApproach ContactRows::kNoApproach{};
-
 ContactRows::ContactRows(const ContactRowsSetting& setting) : setting_(setting) {}
 
 void ContactRows::set_candidates(const std::vector<int>& nodes) {
@@ -132,6 +130,7 @@ void ContactRows::active_gradients(const TermPoint& p, Triplets& out,
 }
 
 bool ContactRows::adapt(const TermPoint& p) {
+  const bool widened = approach_->adapt(candidates_, multipliers(p.z));
   const int nn = static_cast<int>(body().face_points().size());
   std::vector<bool> is_candidate(nn, false);
   for (int n : candidates_) is_candidate[n] = true;
@@ -147,7 +146,7 @@ bool ContactRows::adapt(const TermPoint& p) {
     const TravelGap g = travel_gap(body().indenter(), body().direction(), x, t0 + depth, false);
     if (g.hits && g.travel - t0 - depth <= setting_.candidate_depth) added.insert(n);
   }
-  if (added.empty()) return false;
+  if (added.empty()) return widened;
   candidates_.insert(candidates_.end(), added.begin(), added.end());
   candidates_changed(true);
   return true;

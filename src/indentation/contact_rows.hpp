@@ -36,9 +36,12 @@ struct ContactRowsSetting {
 class ContactRows : public ContactTerm {
  public:
   explicit ContactRows(const ContactRowsSetting& setting);
+  ContactRows(const ContactRows&) = delete;  // approach_ may point at no_approach_
+  ContactRows& operator=(const ContactRows&) = delete;
 
-  // The local law the rows see (kept by reference; none unless set).
-  void set_approach(const LocalApproach& approach) { approach_ = &approach; }
+  // The local law the rows see (kept by reference; none unless set). Not const: a non-local
+  // law's coupling follows the contact (adapt()).
+  void set_approach(LocalApproach& approach) { approach_ = &approach; }
 
   int size() const override { return static_cast<int>(candidates_.size()); }
   const std::vector<int>& candidates() const { return candidates_; }
@@ -123,8 +126,8 @@ class ContactRows : public ContactTerm {
   std::vector<std::vector<int>> coupling_slots_;
 
  private:
-  static const LocalApproach kNoApproach;
-  const LocalApproach* approach_ = &kNoApproach;
+  LocalApproach no_approach_;
+  LocalApproach* approach_ = &no_approach_;
 };
 
 }  // namespace si

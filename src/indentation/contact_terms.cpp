@@ -42,7 +42,7 @@ ContactParts make_contact_parts(const IndentationOptions& options,
     law = std::move(layer);
   } else if (options.local.kind == LocalLawKind::kElasticFace) {
     auto face = std::make_unique<ElasticFace>(options.local.face, setting.shell, setting.body,
-                                              *rows, options.face_zone_radius);
+                                              *rows, options.face_zone_bound);
     rows->set_approach(*face);
     law = std::move(face);
   }

@@ -11,8 +11,8 @@
 namespace si {
 
 ElasticFace::ElasticFace(std::shared_ptr<const SupportKernel> kernel, const ShellPart& shell,
-                         const ContactBody& body, const ContactRows& rows, double zone_radius)
-    : shell_(shell), body_(body), rows_(rows), zone_radius_(zone_radius) {
+                         const ContactBody& body, const ContactRows& rows, double zone_bound)
+    : shell_(shell), body_(body), rows_(rows), zone_bound_(zone_bound), zone_radius_(zone_bound) {
   const ShellModel& model = shell.model();
   for (const Support& s : model.supports)
     if (s.kind == SupportKind::kSymmetryPlane) {
@@ -46,6 +46,7 @@ ElasticFace::ElasticFace(std::shared_ptr<const SupportKernel> kernel, const Shel
                       ": use linear kinematics (the fast path has no block), a coarser apex "
                       "mesh or a smaller path.depth_max",
                   Where{"", "contact.local_support", "shell", 0});
+    zone_radius_ = zone_bound_ / 4;
   }
 }
 
@@ -71,9 +72,25 @@ bool ElasticFace::in_zone(int node) const {
 std::vector<int> ElasticFace::coupled(const std::vector<int>& nodes, int i) const {
   std::vector<int> out;
   if (zone_radius_ < 0 || !in_zone(nodes[i])) return out;
-  for (int j = 0; j < static_cast<int>(nodes.size()); ++j)
-    if (j != i && in_zone(nodes[j])) out.push_back(j);
+  keep_columns_of(nodes);
+  out.reserve(zone_members_.size());
+  for (int j : zone_members_)
+    if (j != i) out.push_back(j);
   return out;
+}
+
+bool ElasticFace::adapt(const std::vector<int>& nodes,
+                        const Eigen::Ref<const cont::Vector>& lambda) {
+  if (zone_radius_ <= 0 || zone_radius_ >= zone_bound_) return false;
+  const std::vector<Vector3d>& x = body_.face_points();
+  double reach = 0;  // of the pressed nodes from the first touch
+  for (int i = 0; i < static_cast<int>(nodes.size()); ++i)
+    if (lambda[i] > 0) reach = std::max(reach, (x[nodes[i]] - x[body_.first_node()]).norm());
+  if (reach <= kZoneFill * zone_radius_) return false;
+  zone_radius_ = std::min(zone_bound_, kZoneGrowth * std::max(zone_radius_, reach));
+  column_nodes_.clear();  // the columns and the members hold the old zone's couplings
+  columns_.clear();
+  return true;
 }
 
 // Called per entry of the Newton rows' block, after prepare() (ContactRows::add_jacobian) has
@@ -115,9 +132,12 @@ double ElasticFace::own(int node) const {
 }
 
 void ElasticFace::keep_columns_of(const std::vector<int>& nodes) const {
-  if (nodes == column_nodes_) return;
+  if (nodes == column_nodes_ && !nodes.empty()) return;
   column_nodes_ = nodes;
   columns_.assign(nodes.size(), Eigen::VectorXd());
+  zone_members_.clear();
+  for (int j = 0; j < static_cast<int>(nodes.size()); ++j)
+    if (in_zone(nodes[j])) zone_members_.push_back(j);
 }
 
 const Eigen::VectorXd& ElasticFace::column(const std::vector<int>& nodes, int j) const {

@@ -10,12 +10,18 @@
 // the Schur complement (linear_indentation.hpp); the Newton paths' rows gain C's entries in the
 // other multipliers' columns (coupled(), layer_coupling()), a dense block over the zone, which
 // the Krylov solver's preconditioner eliminates over the pressed rows (coupled_rows.hpp). The zone:
-// the candidates within `zone_radius` of the first touch's face point (0: all), which the runs make
-// the sphere's chord at the path's depth, an upper bound of the contact radius. Outside it a node's
-// approach is its own disc's alone: C_ij = 0 for i != j unless both lie in the zone, so that the
-// Newton paths and the fast path solve one model wherever the contact stays in the zone. The runs
-// give the fast path zone_radius -1: every pair coupled and no block (it needs none, and a 0-10 mm
-// zone on a fine mesh is 1e8 entries). The coefficients are those of the reference configuration
+// the candidates within a radius of the first touch's face point. Outside it a node's approach is
+// its own disc's alone: C_ij = 0 for i != j unless both lie in the zone, so that the Newton paths
+// and the fast path solve one model wherever the contact stays in the zone. The zone follows the
+// contact: it starts at a quarter of its bound (`zone_bound`, which the runs make the sphere's
+// chord at the path's depth, an upper bound of the contact radius), and after an accepted point
+// whose pressed nodes reach past kZoneFill of it, it widens by kZoneGrowth (at most to the bound)
+// and the point is solved again (adapt()): every accepted point has its contact inside the zone.
+// Why: the block's entries go as the zone's radius to the fourth power, and they fill J's products
+// and pattern (a whole-path zone made J twice the shell's size on the paper's cap 0-10 mm). The
+// runs give the fast path zone_bound -1: every pair coupled and no block (it needs none, and a
+// 0-10 mm zone on a fine mesh is 1e8 entries); zone_bound 0 couples every pair on the Newton paths
+// too (the tests' small models). The coefficients are those of the reference configuration
 // (the face's kernel is a small-strain one; with nonlinear kinematics the contact patch stays small
 // against the cap).
 #pragma once
@@ -33,13 +39,17 @@ namespace si {
 class ElasticFace final : public ContactTerm, public LocalApproach {
  public:
   static constexpr int kMaxZoneNodes = 3000;  // 9e6 block entries (~0.1 GB in J)
+  // The zone widens once its pressed nodes reach past this share of its radius, by this factor:
+  // a few widenings over a path (three on the paper's cap 0-10 mm), each a re-solve.
+  static constexpr double kZoneFill = 0.8;
+  static constexpr double kZoneGrowth = 1.5;
   // The influence table reaches the largest distance between the body's reachable nodes and
-  // their images. zone_radius < 0: every pair coupled and no Newton block (the linear fast path
-  // only). Throws an input error naming contact.local_support if the zone holds more than
-  // kMaxZoneNodes reachable nodes (the block's memory, n^2 entries, and its LU). Keeps
-  // references to the shell, the body and the rows.
+  // their images. zone_bound < 0: every pair coupled and no Newton block (the linear fast path
+  // only). Throws an input error naming contact.local_support if the bound's zone holds more
+  // than kMaxZoneNodes reachable nodes (the block's memory, n^2 entries). Keeps references to
+  // the shell, the body and the rows.
   ElasticFace(std::shared_ptr<const SupportKernel> kernel, const ShellPart& shell,
-              const ContactBody& body, const ContactRows& rows, double zone_radius = 0);
+              const ContactBody& body, const ContactRows& rows, double zone_bound = 0);
 
   int size() const override { return 0; }
   void add_pattern(Triplets&) const override {}
@@ -64,6 +74,8 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
                              Eigen::VectorXd& column) const override;
   std::vector<int> coupled(const std::vector<int>& nodes, int i) const override;
   double layer_coupling(const std::vector<int>& nodes, int i, int j) const override;
+  bool adapt(const std::vector<int>& nodes, const Eigen::Ref<const cont::Vector>& lambda) override;
+  double zone_radius() const { return zone_radius_; }  // mm; <= 0: every pair
 
   // C between mesh nodes a and b, mm/N (0 for a != b unless both lie in the zone).
   double coefficient(int a, int b) const {
@@ -83,8 +95,8 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   // quadrature of the transform).
   double own(int node) const;
   // C's column j over `nodes`, computed on first use and kept (the pressed nodes' columns: as
-  // many as the fast path keeps of S), after keep_columns_of(nodes), which drops them when the
-  // candidates change.
+  // many as the fast path keeps of S), after keep_columns_of(nodes), which drops them (and the
+  // zone's members among the candidates) when the candidates change.
   void keep_columns_of(const std::vector<int>& nodes) const;
   const Eigen::VectorXd& column(const std::vector<int>& nodes, int j) const;
 
@@ -92,13 +104,14 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   const ContactBody& body_;
   const ContactRows& rows_;
   std::vector<Mirror> mirrors_;
-  double zone_radius_ = 0;
+  double zone_bound_ = 0, zone_radius_ = 0;
   std::unique_ptr<FaceInfluence> influence_;
   std::unique_ptr<FaceInfluence> mid_plane_;  // the same for the mid-plane (PlateSurface::kMid)
   mutable std::vector<double> own_;           // per mesh node, NaN until asked
   mutable std::vector<int> column_nodes_;
   mutable std::vector<Eigen::VectorXd> columns_;
-  mutable Eigen::VectorXd approach_;  // u = C lambda of the last prepare()
+  mutable std::vector<int> zone_members_;  // the candidates (indices) in the zone
+  mutable Eigen::VectorXd approach_;       // u = C lambda of the last prepare()
   mutable const double* prepared_for_ = nullptr;
 };
 

@@ -41,12 +41,12 @@ struct IndentationOptions {
   bool interpolated_traction = false;
   InterpolatedContactOptions interpolated;
   LocalContactLaw local;  // local contact in series (none by default)
-  // The elastic face (local_support: shell) couples the contact nodes within this distance of the
-  // first touch (mm; 0: all candidates): the Newton paths' Jacobian holds a dense block over
-  // them. The runs take the sphere's chord at the path's depth, an upper bound of the contact
-  // radius, or -1 where the linear fast path solves it: every pair coupled, no Newton block
-  // (elastic_face.hpp).
-  double face_zone_radius = 0;
+  // The elastic face (local_support: shell) couples the contact nodes within a zone around the
+  // first touch that follows the contact up to this radius (mm; 0: all candidates): the Newton
+  // paths' Jacobian holds a dense block over them. The runs take the sphere's chord at the
+  // path's depth, an upper bound of the contact radius, or -1 where the linear fast path solves
+  // it: every pair coupled, no Newton block (elastic_face.hpp).
+  double face_zone_bound = 0;
   // contact.fbar with the nodal traction (face_thickening.hpp), linear kinematics only: the
   // section's Fbar+ (VamSection::Fbar_top); with the interpolated traction it is interpolated.fbar.
   std::optional<Vector6d> nodal_fbar;

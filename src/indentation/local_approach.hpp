@@ -45,6 +45,13 @@ class LocalApproach {
   virtual double layer_coupling(const std::vector<int>& /*nodes*/, int /*i*/, int /*j*/) const {
     return 0.0;
   }
+  // After an accepted point (ContactRows::adapt): a non-local law may widen its coupling as the
+  // pressed candidates (lambda > 0) near its edge; true if it did (the pattern is then rebuilt
+  // and the point solved again).
+  virtual bool adapt(const std::vector<int>& /*nodes*/,
+                     const Eigen::Ref<const cont::Vector>& /*lambda*/) {
+    return false;
+  }
   // The position of alpha in z (the dent's column in the contact rows), -1 without one.
   virtual int alpha_index() const { return -1; }
   // A power law's start is regular only at the kink of the NCP function: a gap within

@@ -20,6 +20,7 @@
 #include "../verification_record.hpp"
 #include "analysis/local_contact.hpp"
 #include "continuation/kinsol_corrector.hpp"
+#include "continuation/natural.hpp"
 #include "core/error.hpp"
 #include "indentation/linear_indentation.hpp"
 #include "io/case_file.hpp"
@@ -35,7 +36,7 @@ const char* const kPlateShell = "{type: flat_circular_plate, radius: 25 mm, edge
 
 IndentationFixture elastic_face_plate(
     const std::string& symmetry, double size_apex,
-    JacobianSolverKind solver = JacobianSolverKind::kPreconditionedKrylov) {
+    JacobianSolverKind solver = JacobianSolverKind::kPreconditionedKrylov, double zone_bound = 0) {
   CaseFile c = isotropic_indentation_case(
       3.8, kPlateShell,
       "{size_apex: " + std::to_string(size_apex) +
@@ -45,6 +46,7 @@ IndentationFixture elastic_face_plate(
   c.contact.local_support = LocalSupport::kShell;
   IndentationOptions o;
   o.linear_solver = solver;
+  o.face_zone_bound = zone_bound;
   o.local = local_contact_law(c);
   EXPECT_EQ(o.local.kind, LocalLawKind::kElasticFace);
   return IndentationFixture(c, o);
@@ -141,6 +143,46 @@ TEST(ElasticFace, KinsolMatchesTheFastPath) {
     EXPECT_EQ(work.lu_fallbacks, 0);
     EXPECT_LE(work.krylov_products, 3 * work.krylov_solves);
   }
+}
+
+// The Newton paths couple the candidates within a zone that follows the contact (starting at a
+// quarter of its bound, widened after accepted points whose pressed nodes near its edge): a
+// natural path to 0.5 mm (contact radius 1.12 mm) with the zone bounded at 4 mm (it starts at
+// 1 mm and must widen) ends on the fast path's solution, where every pair is coupled. Bounded at
+// 1 mm the zone cannot hold the contact, and the force differs: the zone is not a formality.
+TEST(ElasticFace, ZoneFollowsTheContact) {
+  const double depth = 0.5;
+  IndentationFixture all = elastic_face_plate("quarter", 0.5);
+  LinearIndentation fast(*all.problem);
+  const IndentationState reference = all.problem->evaluate(fast.solve(depth), depth);
+  ASSERT_GT(reference.contact_radius, 1.0);  // past the starting zone
+  const auto path_force = [&](double bound) {
+    IndentationFixture fx =
+        elastic_face_plate("quarter", 0.5, JacobianSolverKind::kPreconditionedKrylov, bound);
+    IndentationProblem& p = *fx.problem;
+    cont::Settings settings;
+    settings.method = cont::Method::kNatural;
+    settings.step_initial = settings.step_max = 0.1;
+    settings.p_max = depth;
+    settings.newton = testing::tight_kinsol_settings(p);
+    settings.detect_limit_points = false;
+    const cont::Branch b = cont::natural(p, p.initial_point(), 0.0, settings);
+    EXPECT_EQ(b.status, cont::Status::kReachedBound) << b.reason;
+    return p.evaluate(b.points.back().x, b.points.back().p);
+  };
+  const IndentationState followed = path_force(4.0);
+  std::cout << "elastic face, plate at " << depth << " mm: force " << followed.force
+            << " N (zone to 4 mm) / " << reference.force << " N (every pair), contact radius "
+            << reference.contact_radius << " mm\n";
+  test::record_verification(kTable,
+                            "elastic face, plate at 0.5 mm: force, zone following the "
+                            "contact vs every pair coupled",
+                            reference.force, followed.force, 1e-8,
+                            "the fast path (every pair coupled)");
+  EXPECT_NEAR(followed.force, reference.force, 1e-8 * reference.force);
+  EXPECT_EQ(followed.contact_nodes, reference.contact_nodes);
+  const IndentationState held = path_force(1.0);
+  EXPECT_GT(std::abs(held.force - reference.force), 1e-3 * reference.force) << held.force;
 }
 
 void expect_input_error(const std::string& yaml, const std::string& key, int line) {
