@@ -304,6 +304,7 @@ nlohmann::json path_attachment(const IndentationProblem& problem, const PathResu
   nlohmann::json points = nlohmann::json::array();
   for (const PathPoint& p : r.points) points.push_back(path_point_values(p, result_columns(r)));
   return {{"candidates", problem.candidates()},
+          {"local_state", problem.local_state()},
           {"points", points},
           {"record", control.save_record ? control.save_record() : nlohmann::json()}};
 }
@@ -328,9 +329,12 @@ cont::Checkpoint restore(const PathControl& control, IndentationProblem& problem
   const std::size_t nc =
       c.state.current.point.x.size() - problem.num_shell_unknowns() - problem.num_local_unknowns();
   std::vector<int> candidates = a["candidates"].get<std::vector<int>>();
-  if (nc != candidates.size() || a["points"].size() != c.branch.points.size())
+  const nlohmann::json local = a.value("local_state", nlohmann::json::array());
+  const bool numbers = local.is_array() && std::all_of(local.begin(), local.end(),
+                                                       [](const auto& v) { return v.is_number(); });
+  if (nc != candidates.size() || a["points"].size() != c.branch.points.size() || !numbers ||
+      !problem.restore_contact(candidates, local.get<std::vector<double>>()))
     throw_input("cannot resume: the checkpoint does not belong to this case", where);
-  problem.restore_candidates(candidates);
   for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
     r.points.push_back(
         path_point_from_values(a["points"][i].get<std::vector<double>>(), result_columns(r)));

@@ -68,7 +68,8 @@ void ContactJacobianSolver::map_jacobian(const SparseMatrix& J) {
           static_cast<int>(std::lower_bound(begin, end, H_.innerIndexPtr()[k]) - J.innerIndexPtr());
   }
   analyzed_outer_.assign(J.outerIndexPtr(), J.outerIndexPtr() + J.outerSize() + 1);
-  rows_coupled_ = CoupledRows::any(J, num_shell_, static_cast<int>(J.rows()) - num_shell_);
+  rows_coupled_ =
+      CoupledRows::any(J, num_shell_, static_cast<int>(J.rows()) - num_shell_ - border_);
   row_slots_.clear();
   lu_.reset();
 }

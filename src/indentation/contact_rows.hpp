@@ -42,6 +42,11 @@ class ContactRows : public ContactTerm {
   // The local law the rows see (kept by reference; none unless set). Not const: a non-local
   // law's coupling follows the contact (adapt()).
   void set_approach(LocalApproach& approach) { approach_ = &approach; }
+  // The law's adapted state (LocalApproach::adapted), for a checkpoint.
+  std::vector<double> approach_state() const { return approach_->adapted(); }
+  bool restore_approach_state(const std::vector<double>& s) {
+    return approach_->restore_adapted(s);
+  }
 
   int size() const override { return static_cast<int>(candidates_.size()); }
   const std::vector<int>& candidates() const { return candidates_; }

@@ -123,6 +123,22 @@ double ElasticFace::coefficient(const FaceInfluence& kernel, int a, int b) const
   return c;
 }
 
+std::vector<double> ElasticFace::adapted() const {
+  if (zone_bound_ <= 0) return {};
+  return {zone_radius_};
+}
+
+bool ElasticFace::restore_adapted(const std::vector<double>& values) {
+  if (zone_bound_ <= 0) return values.empty();
+  // A radius adapt() can reach: from a quarter of the bound up to the bound.
+  if (values.size() != 1 || !(values[0] >= zone_bound_ / 4 && values[0] <= zone_bound_))
+    return false;
+  zone_radius_ = values[0];
+  column_nodes_.clear();
+  columns_.clear();
+  return true;
+}
+
 double ElasticFace::own(int node) const {
   if (own_.empty())
     own_.assign(shell_.model().mesh.nodes.size(), std::numeric_limits<double>::quiet_NaN());

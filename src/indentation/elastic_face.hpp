@@ -75,7 +75,9 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   std::vector<int> coupled(const std::vector<int>& nodes, int i) const override;
   double layer_coupling(const std::vector<int>& nodes, int i, int j) const override;
   bool adapt(const std::vector<int>& nodes, const Eigen::Ref<const cont::Vector>& lambda) override;
-  double zone_radius() const { return zone_radius_; }  // mm; <= 0: every pair
+  // The zone's radius (mm) where it follows the contact, else nothing.
+  std::vector<double> adapted() const override;
+  bool restore_adapted(const std::vector<double>& values) override;
 
   // C between mesh nodes a and b, mm/N (0 for a != b unless both lie in the zone).
   double coefficient(int a, int b) const {

@@ -105,12 +105,15 @@ void IndentationProblem::reset_solver_caches() {
   solver_->reset();
 }
 
-void IndentationProblem::restore_candidates(const std::vector<int>& nodes) {
+bool IndentationProblem::restore_contact(const std::vector<int>& nodes,
+                                         const std::vector<double>& local_state) {
   for (int n : nodes)
-    SI_REQUIRE(n >= 0 && n < model_.mesh.num_nodes(), "restore_candidates: node out of range");
+    SI_REQUIRE(n >= 0 && n < model_.mesh.num_nodes(), "restore_contact: node out of range");
+  if (!contact_->restore_approach_state(local_state)) return false;
   contact_->set_candidates(nodes);
   lay_out();
   build_pattern();
+  return true;
 }
 
 const std::vector<NodeState>& IndentationProblem::shell_terms(const cont::Vector& z, double h,

@@ -110,8 +110,11 @@ class IndentationProblem : public cont::Problem {
   double first_touch() const { return body_.first_touch(); }
   double stiffness_scale() const { return kappa_; }
   const std::vector<int>& candidates() const { return contact_->candidates(); }
-  // Replaces the candidate set (resuming a run whose set had grown): mesh node indices.
-  void restore_candidates(const std::vector<int>& nodes);
+  // The local law's adapted state (an elastic face's zone: LocalApproach::adapted).
+  std::vector<double> local_state() const { return contact_->approach_state(); }
+  // Replaces the candidate set (mesh node indices) and the local law's state, resuming a run
+  // whose set and law had adapted; false (nothing changed) if the state is not this law's.
+  bool restore_contact(const std::vector<int>& nodes, const std::vector<double>& local_state);
   int num_shell_unknowns() const { return shell_.size(); }
   int num_local_unknowns() const { return layout().local; }
   // The support frame's rows (support_frame.hpp), or nullptr: the model rests on none.

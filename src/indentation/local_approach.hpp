@@ -52,6 +52,10 @@ class LocalApproach {
                      const Eigen::Ref<const cont::Vector>& /*lambda*/) {
     return false;
   }
+  // What adapt() has changed, for a checkpoint (empty: nothing), and its restoration in a resumed
+  // run; false if the values cannot be this law's (another case's checkpoint, an edited one).
+  virtual std::vector<double> adapted() const { return {}; }
+  virtual bool restore_adapted(const std::vector<double>& values) { return values.empty(); }
   // The position of alpha in z (the dent's column in the contact rows), -1 without one.
   virtual int alpha_index() const { return -1; }
   // A power law's start is regular only at the kink of the NCP function: a gap within

@@ -34,7 +34,7 @@ bool warm_run(IndentationSetup& setup, const std::vector<double>& travels,
   if (warm.states.size() != travels.size() || warm.num_shell != p.num_shell_unknowns() ||
       warm.num_local != p.num_local_unknowns())
     return false;
-  p.restore_candidates(warm.candidates);
+  if (!p.restore_contact(warm.candidates, warm.local_state)) return false;
   const cont::NewtonSettings newton = path_newton_settings(setup);
   std::vector<Eigen::VectorXd> states;
   for (std::size_t k = 0; k < travels.size(); ++k) {
@@ -51,7 +51,8 @@ bool warm_run(IndentationSetup& setup, const std::vector<double>& travels,
     states.push_back(z);
     if (keep_going && !keep_going()) return false;
   }
-  out.states = {p.candidates(), std::move(states), p.num_shell_unknowns(), p.num_local_unknowns()};
+  out.states = {p.candidates(), p.local_state(), std::move(states), p.num_shell_unknowns(),
+                p.num_local_unknowns()};
   return true;
 }
 
@@ -81,7 +82,8 @@ void cold_run(IndentationSetup& setup, const std::vector<double>& travels,
     return;
   }
   const IndentationProblem& p = *setup.problem;
-  out.states = {p.candidates(), std::move(states), p.num_shell_unknowns(), p.num_local_unknowns()};
+  out.states = {p.candidates(), p.local_state(), std::move(states), p.num_shell_unknowns(),
+                p.num_local_unknowns()};
 }
 
 }  // namespace

@@ -36,9 +36,11 @@
 namespace si {
 
 // The converged states of a run at its travels (the solver's unknowns: shell, contact
-// multipliers, local approach), and the contact candidate set they refer to.
+// multipliers, local approach), and the contact candidate set and local law's adapted state
+// (an elastic face's zone) they refer to.
 struct ForceTravelStates {
   std::vector<int> candidates;
+  std::vector<double> local_state;
   std::vector<Eigen::VectorXd> states;  // one per travel
   int num_shell = 0, num_local = 0;
 };

@@ -13,9 +13,10 @@
 namespace si {
 namespace {
 
-CaseFile resume_case(PathMethod method, LocalContactModel local) {
+CaseFile resume_case(PathMethod method, LocalContactModel local, LocalSupport support) {
   CaseFile c = testing::coarse_cap_path_case("[0/0]2S", method, 1.0, 0.1, 0.15);
   c.contact.local = local;
+  c.contact.local_support = support;
   return c;
 }
 
@@ -24,7 +25,8 @@ struct Killed : std::runtime_error {
 };
 
 void expect_resume_reproduces(PathMethod method, const std::string& name,
-                              LocalContactModel local = LocalContactModel::kNone) {
+                              LocalContactModel local = LocalContactModel::kNone,
+                              LocalSupport support = LocalSupport::kHalfSpace, int kill_after = 5) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
@@ -37,27 +39,31 @@ void expect_resume_reproduces(PathMethod method, const std::string& name,
   // tolerance), so only runs with the same interval agree bit for bit.
   PathControl whole_control = control;
   whole_control.checkpoint = (dir / "whole.json").string();
-  IndentationSetup whole(resume_case(method, local), 1);
+  IndentationSetup whole(resume_case(method, local, support), 1);
   const PathResult a = run_indentation_path(whole, {}, whole_control);
   ASSERT_TRUE(a.completed) << a.reason;
   ASSERT_GT(a.points.size(), 7u);
 
-  {  // killed after 5 points: the last checkpoint is the one of point 3
-    IndentationSetup first(resume_case(method, local), 1);
+  // Killed in the callback of the kill_after-th point (the start is the first; step k's
+  // checkpoint is written after its callback): the last checkpoint is that of this step.
+  const int checkpointed =
+      (kill_after - 2) / control.checkpoint_interval * control.checkpoint_interval;
+  {
+    IndentationSetup first(resume_case(method, local, support), 1);
     int seen = 0;
     const auto kill_after_five = [&](const PathPoint&, const cont::Vector&) {
-      if (++seen == 5) throw Killed();
+      if (++seen == kill_after) throw Killed();
       return true;
     };
     EXPECT_THROW(run_indentation_path(first, kill_after_five, control), Killed);
   }
-  IndentationSetup second(resume_case(method, local), 1);
+  IndentationSetup second(resume_case(method, local, support), 1);
   control.resume = true;
   std::size_t computed = 0;  // points computed after the resume (the others come from disk)
   const auto count = [&](const PathPoint&, const cont::Vector&) { return ++computed > 0; };
   const PathResult b = run_indentation_path(second, count, control);
   ASSERT_TRUE(b.completed) << b.reason;
-  EXPECT_LE(computed, a.points.size() - 3);  // it did start from the checkpoint
+  EXPECT_LE(computed, a.points.size() - checkpointed);  // it did start from the checkpoint
   ASSERT_EQ(a.points.size(), b.points.size());
   // Bit for bit (issue 13 item 13): the solver caches are dropped at every checkpoint, so the
   // resumed run takes the uninterrupted run's steps exactly (it differed by up to 1.4e-10 in
@@ -86,6 +92,14 @@ TEST(IndentationResume, NaturalResumedRunReproducesThePath) {
 TEST(IndentationResume, PseudoArclengthWithYangSunLocalLawReproducesThePath) {
   expect_resume_reproduces(PathMethod::kPseudoArclength, "shellindent_resume_yang_sun",
                            LocalContactModel::kYangSun);
+}
+
+// The elastic face's zone, which widens with the contact (elastic_face.hpp), is part of the
+// checkpoint: a resumed run couples the same nodes as the uninterrupted one. The zone widens at
+// step 4 here; killed at step 7, the run resumes from step 6's checkpoint.
+TEST(IndentationResume, PseudoArclengthWithTheElasticFaceReproducesThePath) {
+  expect_resume_reproduces(PathMethod::kPseudoArclength, "shellindent_resume_elastic_face",
+                           LocalContactModel::kAnisotropic, LocalSupport::kShell, 8);
 }
 
 }  // namespace
