@@ -51,6 +51,8 @@ VARIANTS = {
               "local indentation in series (contact.local: anisotropic, plate support)"),
     "face": ("paper_layups_face.yaml",
              "linear, the elastic face with the F-bar rows (local_support: shell, fbar: true)"),
+    "face_nl": ("paper_layups_face_nl.yaml",
+                "the elastic face (local_support: shell), nonlinear kinematics"),
 }
 # Variants whose sweep is expected to fail, with the phrase every failed case's reason must hold.
 # bernstein4: the paper's shape functions have no partition of unity, so the mapped surface of
