@@ -11,7 +11,8 @@ with contact.local_support: SUPPORT) it writes a case file (work/si/), runs
 results/cap_reference.csv (analyse.py): at equal travel (0.1, 0.25, 0.5, 1 mm) and at equal apex
 mid-surface deflection (the reference's force interpolated at shellindent's apex deflection:
 path.csv's apex_mid_w_mm, the laminate's mid-plane, which differs from the shell's apex_w_mm
-with the elastic face).
+with the elastic face; past the reference's last deflection, shellindent's force interpolated at
+the reference's deflection instead).
 Writes results/shellindent_vs_3d.csv and prints the table.
 """
 from __future__ import annotations
@@ -139,12 +140,19 @@ def main(argv=None):
                     order = np.argsort(rw)
                     f_at_w = float(np.interp(w[k], rw[order], rf[order])) \
                         if rw.min() <= w[k] <= rw.max() else float("nan")
+                    ratio_w = f[k] / f_at_w
+                    # Past the reference's last deflection (its path ends at 1 mm of travel):
+                    # the same comparison the other way, shellindent's force at the solid's
+                    # deflection, where shellindent's path reaches it.
+                    if np.isnan(ratio_w) and w.min() <= rw[j] <= w.max():
+                        mine_order = np.argsort(w)
+                        ratio_w = float(np.interp(rw[j], w[mine_order], f[mine_order])) / rf[j]
                     rows.append(dict(layup=layup, kinematics=kin, law=law,
                                      size_apex_mm=a.size_apex, travel_mm=t, si_force_N=f[k],
                                      ref_force_N=rf[j], ratio_travel=f[k] / rf[j],
                                      si_apex_w_mm=w[k], ref_apex_w_mm=rw[j],
                                      ref_force_at_si_w_N=f_at_w,
-                                     ratio_deflection=f[k] / f_at_w, si_cpu_s=cpu))
+                                     ratio_deflection=ratio_w, si_cpu_s=cpu))
     if rows:
         with open(a.out, "w", newline="") as fo:
             wr = csv.DictWriter(fo, fieldnames=list(rows[0]))
