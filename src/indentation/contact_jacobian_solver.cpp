@@ -313,7 +313,7 @@ void ContactJacobianSolver::apply_condensed(const Eigen::VectorXd& in, Eigen::Ve
       if (row.eq[k] >= 0) r[row.eq[k]] += row.gradient[k] * out[nf + i];
   }
   Eigen::VectorXd y = cholesky_->solve(r);
-  coupled_.correct_shell(y);
+  coupled_.correct_shell(y, *cholesky_);
   out.head(nf) = y;
   Eigen::VectorXd s(nr);
   for (int i = 0; i < nr; ++i) {

@@ -10,7 +10,8 @@
 // in M^-1 B, so off R the condensation on the diagonal is exact). S is solved by Woodbury's
 // identity (Golub & Van Loan 2013, 2.1.4),
 //     S^-1 = H0^-1 - Z W (I + G~_R^T Z W)^-1 G~_R^T H0^-1,   Z = H0^-1 G~_R,
-// Z being |R| solves with H0's factor made as one blocked solve. Why: R is the contact patch,
+// G~_R^T Z being |R| solves with H0's factor made as blocked solves, and Z c one more solve per
+// application. Why: R is the contact patch,
 // tens to hundreds of rows, while an LU of the whole J fills the zone's dense block into the
 // shell's (measured on the paper's cap, 0 -> 10 mm: 8.8x the time of the same path without the
 // law; docs/performance.md).
@@ -31,7 +32,7 @@ class CoupledRows {
   // J: num_shell shell rows first, then one row per entry of `rows` (a floored, gradients in
   // chart coordinates, as the preconditioner condenses them). shell: H0's factor. Returns false
   // if M_RR or the Woodbury matrix is singular (the caller then factors J itself); a block too
-  // large to keep (kMaxCoupledEntries) is left out (empty(): the rows condense on their
+  // large to make (kMaxCoupledRows) is left out (empty(): the rows condense on their
   // diagonals and GMRES carries the couplings).
   bool build(const SparseMatrix& J, int num_shell, const std::vector<ContactJacobianRow>& rows,
              const LinearSolver& shell);
@@ -39,8 +40,8 @@ class CoupledRows {
   void clear();
   // t = M^-1 r over the contact rows (rows appended since build(): b = 0, their diagonal).
   void solve_rows(const std::vector<ContactJacobianRow>& rows, const double* r, double* t) const;
-  // y = H0^-1 rhs on entry, S^-1 rhs on exit.
-  void correct_shell(Eigen::VectorXd& y) const;
+  // y = H0^-1 rhs on entry, S^-1 rhs on exit (shell: H0's factor, as at build()).
+  void correct_shell(Eigen::VectorXd& y, const LinearSolver& shell) const;
 
   // Whether J's contact block couples any two of its num_rows rows (its pattern).
   static bool any(const SparseMatrix& J, int num_shell, int num_rows);
@@ -56,7 +57,6 @@ class CoupledRows {
   std::vector<Coupling> outside_;               // M_RN
   Eigen::PartialPivLU<Eigen::MatrixXd> block_;  // M_RR
   SparseMatrix gradients_;                      // G~_R: num_shell x |R|
-  Eigen::MatrixXd z_;                           // Z
   Eigen::MatrixXd w_;                           // W
   Eigen::PartialPivLU<Eigen::MatrixXd> woodbury_;  // I + G~_R^T Z W
 };
