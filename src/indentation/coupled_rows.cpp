@@ -5,9 +5,10 @@
 namespace si {
 namespace {
 
-// The Woodbury matrix is |R| x |R|, made with |R|^3 operations per refresh: beyond this many
-// coupled rows (8 MB, ~1e10 operations) the block is left to GMRES.
-constexpr int kMaxCoupledRows = 1000;
+// The Woodbury matrix is |R| x |R|, made with ~3 |R|^3 operations per refresh: beyond the
+// elastic face's largest zone (ElasticFace::kMaxZoneNodes; 3000 rows: 72 MB per matrix, ~1e11
+// operations) the block is left to GMRES.
+constexpr int kMaxCoupledRows = 3000;
 // G~_R^T H0^-1 G~_R is made this many columns of H0^-1 G~_R at a time (a blocked solve of
 // num_shell x kSolveColumns), so that Z is never held whole.
 constexpr int kSolveColumns = 64;
