@@ -1,6 +1,7 @@
 #include "indentation/elastic_face.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -147,13 +148,29 @@ double ElasticFace::own(int node) const {
   return c;
 }
 
+// Candidates appended (ContactRows::adapt: the old set a prefix of the new) extend the kept
+// columns by their own rows; any other change drops them.
 void ElasticFace::keep_columns_of(const std::vector<int>& nodes) const {
   if (nodes == column_nodes_ && !nodes.empty()) return;
-  column_nodes_ = nodes;
-  columns_.assign(nodes.size(), Eigen::VectorXd());
-  zone_members_.clear();
-  for (int j = 0; j < static_cast<int>(nodes.size()); ++j)
+  const std::size_t kept = column_nodes_.size();
+  const bool appended = kept > 0 && nodes.size() > kept &&
+                        std::equal(column_nodes_.begin(), column_nodes_.end(), nodes.begin());
+  if (!appended) {
+    columns_.clear();
+    zone_members_.clear();
+  }
+  const int from = appended ? static_cast<int>(kept) : 0;
+  const int n = static_cast<int>(nodes.size());
+  for (int j = 0; j < static_cast<int>(columns_.size()); ++j) {
+    Eigen::VectorXd& c = columns_[j];
+    if (c.size() == 0) continue;
+    c.conservativeResize(n);
+    for (int i = from; i < n; ++i) c[i] = coefficient(nodes[i], nodes[j]);
+  }
+  columns_.resize(nodes.size());
+  for (int j = from; j < n; ++j)
     if (in_zone(nodes[j])) zone_members_.push_back(j);
+  column_nodes_ = nodes;
 }
 
 const Eigen::VectorXd& ElasticFace::column(const std::vector<int>& nodes, int j) const {
