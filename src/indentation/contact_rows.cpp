@@ -19,8 +19,17 @@ void ContactRows::set_candidates(const std::vector<int>& nodes) {
 void ContactRows::add_pattern(Triplets& t) const {
   for (int i = 0; i < size(); ++i)
     add_node_row_pattern(shell().dofs(), candidates_[i], first() + i, approach_->alpha_index(), t);
+  // A non-local law's block (an elastic face's zone: n_zone^2 entries, millions on a fine mesh):
+  // reserved at once, not grown by doubling.
+  std::vector<std::vector<int>> coupled(candidates_.size());
+  std::size_t entries = 0;
+  for (int i = 0; i < size(); ++i) {
+    coupled[i] = approach_->coupled(candidates_, i);
+    entries += coupled[i].size();
+  }
+  t.reserve(t.size() + entries);
   for (int i = 0; i < size(); ++i)
-    for (int j : approach_->coupled(candidates_, i)) t.emplace_back(first() + i, first() + j, 0.0);
+    for (int j : coupled[i]) t.emplace_back(first() + i, first() + j, 0.0);
 }
 
 void ContactRows::locate(const SparseMatrix& J) {
