@@ -20,7 +20,6 @@ constexpr double kSingularBlock = 1e-14;
 
 void CoupledRows::clear() {
   index_.clear();
-  place_.clear();
   outside_.clear();
   gradients_.resize(0, 0);
   w_.resize(0, 0);
@@ -35,37 +34,72 @@ bool CoupledRows::any(const SparseMatrix& J, int num_shell, int num_rows) {
   return false;
 }
 
+namespace {
+
+// M's nonzero off-diagonals, in the contact rows' numbering.
+struct Entry {
+  int i, j;
+  double value;
+};
+
+std::vector<Entry> off_diagonals(const SparseMatrix& J, int num_shell, int num_rows) {
+  std::vector<Entry> entries;
+  for (int j = 0; j < num_rows; ++j)
+    for (SparseMatrix::InnerIterator it(J, num_shell + j); it; ++it) {
+      const int i = static_cast<int>(it.row()) - num_shell;
+      if (i >= 0 && i < num_rows && i != j && it.value() != 0.0)
+        entries.push_back({i, j, it.value()});
+    }
+  return entries;
+}
+
+// G~_R: num_shell x |R|, column k the chart gradient of row index[k].
+SparseMatrix chart_gradients(int num_shell, const std::vector<ContactJacobianRow>& rows,
+                             const std::vector<int>& index) {
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int k = 0; k < static_cast<int>(index.size()); ++k) {
+    const ContactJacobianRow& row = rows[index[k]];
+    for (int l = 0; l < 5; ++l)
+      if (row.eq[l] >= 0) t.emplace_back(row.eq[l], k, row.gradient[l]);
+  }
+  SparseMatrix G(num_shell, static_cast<Eigen::Index>(index.size()));
+  G.setFromTriplets(t.begin(), t.end());
+  return G;
+}
+
+// G^T H0^-1 G, kSolveColumns columns of H0^-1 G at a time.
+Eigen::MatrixXd projected_inverse(const SparseMatrix& G, const LinearSolver& shell) {
+  const int r = static_cast<int>(G.cols());
+  Eigen::MatrixXd out(r, r);
+  for (int first = 0; first < r; first += kSolveColumns) {
+    const int n = std::min(kSolveColumns, r - first);
+    const SparseMatrix block = G.middleCols(first, n);
+    out.middleCols(first, n) = G.transpose() * shell.solve_columns(Eigen::MatrixXd(block));
+  }
+  return out;
+}
+
+}  // namespace
+
 bool CoupledRows::build(const SparseMatrix& J, int num_shell,
                         const std::vector<ContactJacobianRow>& rows, const LinearSolver& shell) {
   clear();
-  const int nr = static_cast<int>(rows.size());
-  struct Entry {
-    int i, j;
-    double value;
-  };
-  std::vector<Entry> entries;  // M's nonzero off-diagonals
+  const std::vector<Entry> entries = off_diagonals(J, num_shell, static_cast<int>(rows.size()));
+  // R: the rows with couplings and the rows they read that have b != 0.
   std::vector<char> in_r(rows.size(), 0);
-  for (int j = 0; j < nr; ++j)
-    for (SparseMatrix::InnerIterator it(J, num_shell + j); it; ++it) {
-      const int i = static_cast<int>(it.row()) - num_shell;
-      if (i < 0 || i >= nr || i == j || it.value() == 0.0) continue;
-      entries.push_back({i, j, it.value()});
-      in_r[i] = 1;
-    }
-  if (entries.empty()) return true;
-  for (const Entry& e : entries)
+  for (const Entry& e : entries) {
+    in_r[e.i] = 1;
     if (rows[e.j].b != 0.0) in_r[e.j] = 1;
-  place_.assign(rows.size(), -1);
-  for (int i = 0; i < nr; ++i)
+  }
+  std::vector<int> place(rows.size(), -1);  // per contact row: its place in R, or -1
+  for (int i = 0; i < static_cast<int>(rows.size()); ++i)
     if (in_r[i]) {
-      place_[i] = static_cast<int>(index_.size());
+      place[i] = static_cast<int>(index_.size());
       index_.push_back(i);
     }
   const int r = static_cast<int>(index_.size());
-  if (r > kMaxCoupledRows) {
-    clear();
-    return true;
-  }
+  if (r > kMaxCoupledRows) clear();
+  if (empty()) return true;
 
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(r, r);
   Eigen::VectorXd b(r), b_over_a(r);
@@ -76,41 +110,21 @@ bool CoupledRows::build(const SparseMatrix& J, int num_shell,
     b_over_a[k] = row.b / row.a;
   }
   for (const Entry& e : entries) {
-    const int pi = place_[e.i], pj = place_[e.j];
-    if (pj >= 0)
-      M(pi, pj) = e.value;
+    if (place[e.j] >= 0)
+      M(place[e.i], place[e.j]) = e.value;
     else
-      outside_.push_back({pi, e.j, e.value});
+      outside_.push_back({place[e.i], e.j, e.value});
   }
   block_.compute(M);
-  if (!(block_.rcond() > kSingularBlock)) {
-    clear();
-    return false;
+  if (block_.rcond() > kSingularBlock) {
+    w_ = block_.solve(Eigen::MatrixXd(b.asDiagonal()));
+    w_.diagonal() -= b_over_a;
+    gradients_ = chart_gradients(num_shell, rows, index_);
+    woodbury_.compute(Eigen::MatrixXd::Identity(r, r) + projected_inverse(gradients_, shell) * w_);
+    if (woodbury_.rcond() > kSingularBlock) return true;
   }
-  w_ = block_.solve(Eigen::MatrixXd(b.asDiagonal()));
-  w_.diagonal() -= b_over_a;
-
-  std::vector<Eigen::Triplet<double, int>> t;
-  for (int k = 0; k < r; ++k) {
-    const ContactJacobianRow& row = rows[index_[k]];
-    for (int l = 0; l < 5; ++l)
-      if (row.eq[l] >= 0) t.emplace_back(row.eq[l], k, row.gradient[l]);
-  }
-  gradients_.resize(num_shell, r);
-  gradients_.setFromTriplets(t.begin(), t.end());
-  Eigen::MatrixXd GZ(r, r);  // G~_R^T Z
-  for (int first = 0; first < r; first += kSolveColumns) {
-    const int n = std::min(kSolveColumns, r - first);
-    const SparseMatrix block = gradients_.middleCols(first, n);
-    GZ.middleCols(first, n) = gradients_.transpose() * shell.solve_columns(Eigen::MatrixXd(block));
-  }
-  const Eigen::MatrixXd K = Eigen::MatrixXd::Identity(r, r) + GZ * w_;
-  woodbury_.compute(K);
-  if (!(woodbury_.rcond() > kSingularBlock)) {
-    clear();
-    return false;
-  }
-  return true;
+  clear();
+  return false;
 }
 
 void CoupledRows::solve_rows(const std::vector<ContactJacobianRow>& rows, const double* r,

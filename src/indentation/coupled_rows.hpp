@@ -52,12 +52,11 @@ class CoupledRows {
     int column;  // contact row outside R
     double value;
   };
-  std::vector<int> index_;                      // R: contact rows
-  std::vector<int> place_;                      // per contact row at build(): its place in R, or -1
-  std::vector<Coupling> outside_;               // M_RN
-  Eigen::PartialPivLU<Eigen::MatrixXd> block_;  // M_RR
-  SparseMatrix gradients_;                      // G~_R: num_shell x |R|
-  Eigen::MatrixXd w_;                           // W
+  std::vector<int> index_;                         // R: contact rows
+  std::vector<Coupling> outside_;                  // M_RN
+  Eigen::PartialPivLU<Eigen::MatrixXd> block_;     // M_RR
+  SparseMatrix gradients_;                         // G~_R: num_shell x |R|
+  Eigen::MatrixXd w_;                              // W
   Eigen::PartialPivLU<Eigen::MatrixXd> woodbury_;  // I + G~_R^T Z W
 };
 

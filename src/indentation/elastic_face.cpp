@@ -88,10 +88,14 @@ bool ElasticFace::adapt(const std::vector<int>& nodes,
   for (int i = 0; i < static_cast<int>(nodes.size()); ++i)
     if (lambda[i] > 0) reach = std::max(reach, (x[nodes[i]] - x[body_.first_node()]).norm());
   if (reach <= kZoneFill * zone_radius_) return false;
-  zone_radius_ = std::min(zone_bound_, kZoneGrowth * std::max(zone_radius_, reach));
+  set_zone(std::min(zone_bound_, kZoneGrowth * std::max(zone_radius_, reach)));
+  return true;
+}
+
+void ElasticFace::set_zone(double radius) {
+  zone_radius_ = radius;
   column_nodes_.clear();  // the columns and the members hold the old zone's couplings
   columns_.clear();
-  return true;
 }
 
 // Called per entry of the Newton rows' block, after prepare() (ContactRows::add_jacobian) has
@@ -134,9 +138,7 @@ bool ElasticFace::restore_adapted(const std::vector<double>& values) {
   // A radius adapt() can reach: from a quarter of the bound up to the bound.
   if (values.size() != 1 || !(values[0] >= zone_bound_ / 4 && values[0] <= zone_bound_))
     return false;
-  zone_radius_ = values[0];
-  column_nodes_.clear();
-  columns_.clear();
+  set_zone(values[0]);
   return true;
 }
 

@@ -100,6 +100,8 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   // many as the fast path keeps of S), after keep_columns_of(nodes), which drops them (and the
   // zone's members among the candidates) when the candidates change.
   void keep_columns_of(const std::vector<int>& nodes) const;
+  // A new zone radius; the kept columns and zone members go with the old one.
+  void set_zone(double radius);
   const Eigen::VectorXd& column(const std::vector<int>& nodes, int j) const;
 
   const ShellPart& shell_;
