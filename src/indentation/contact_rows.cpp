@@ -138,6 +138,27 @@ void ContactRows::active_gradients(const TermPoint& p, Triplets& out,
   }
 }
 
+// Each new candidate brings the nodes within kGrowthMargin spacings of it (a spacing: the square
+// root of its tributary area, on the face in the reference state): the set then grows once in
+// several steps instead of at nearly every one, whether the reach spreads with the travel or
+// the shell draws nodes under the indenter's edge. A growth re-lays the Jacobian's pattern
+// (with an elastic face its zone block, millions of entries on a fine mesh); extra candidates
+// are rows pinned to lambda = 0 while the indenter is far.
+void ContactRows::add_margin(std::set<int>& added, const std::vector<bool>& is_candidate) const {
+  const std::vector<Vector3d>& x = body().face_points();
+  const std::vector<int> reached(added.begin(), added.end());
+  for (int n = 0; n < static_cast<int>(x.size()); ++n) {
+    if (is_candidate[n] || added.count(n)) continue;
+    for (int m : reached) {
+      const double margin = kGrowthMargin * std::sqrt(shell().tributary_area(m));
+      if ((x[n] - x[m]).squaredNorm() <= margin * margin) {
+        added.insert(n);
+        break;
+      }
+    }
+  }
+}
+
 bool ContactRows::adapt(const TermPoint& p) {
   const bool widened = approach_->adapt(candidates_, multipliers(p.z));
   const int nn = static_cast<int>(body().face_points().size());
@@ -156,6 +177,7 @@ bool ContactRows::adapt(const TermPoint& p) {
     if (g.hits && g.travel - t0 - depth <= setting_.candidate_depth) added.insert(n);
   }
   if (added.empty()) return widened;
+  add_margin(added, is_candidate);
   candidates_.insert(candidates_.end(), added.begin(), added.end());
   candidates_changed(true);
   return true;

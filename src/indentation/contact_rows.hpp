@@ -10,9 +10,11 @@
 //
 // Candidates: the nodes whose contact point the indenter can reach within `candidate_depth` of
 // travel past first touch; adapt() grows the set, after each accepted point, by every node whose
-// contact point the indenter can now reach within that depth (the set follows the deformed shell).
+// contact point the indenter can now reach within that depth (the set follows the deformed shell)
+// and the nodes within a few spacings of those (a margin, so that it grows in few events).
 #pragma once
 
+#include <set>
 #include <vector>
 
 #include "contact/ncp_function.hpp"
@@ -131,6 +133,10 @@ class ContactRows : public ContactTerm {
   std::vector<std::vector<int>> coupling_slots_;
 
  private:
+  // Node spacings around each new candidate that a growth takes with it (adapt()).
+  static constexpr double kGrowthMargin = 4.0;
+  void add_margin(std::set<int>& added, const std::vector<bool>& is_candidate) const;
+
   LocalApproach no_approach_;
   LocalApproach* approach_ = &no_approach_;
 };

@@ -55,7 +55,30 @@ TEST(CandidateGrowth, SmallInitialSetGrowsAndGivesTheSamePath) {
     EXPECT_NEAR(fa, fb, 1e-7 * (1 + fb)) << "depth " << depth;
   }
   EXPECT_EQ(ba.points.back().x.size(), a.problem->size());
+
   EXPECT_GT(a.problem->evaluate(ba.points.back().x, ba.points.back().p).contact_nodes, 1);
+}
+
+// Each growth takes a margin of a few node spacings around the nodes that came within reach, so
+// that the set grows in few events (each re-lays the Jacobian's pattern): on 24 steps of
+// 0.0625 mm from a set that starts with the nodes within 0.05 mm of travel.
+TEST(CandidateGrowth, GrowsInFewEvents) {
+  IndentationOptions small;
+  small.candidate_depth = 0.05;
+  testing::IndentationFixture a(testing::coarse_cap_case("nonlinear", "[0/0]2S", "quarter"), small);
+  cont::Settings s;
+  s.method = cont::Method::kNatural;
+  for (int k = 1; k <= 24; ++k) s.parameter_values.push_back(0.0625 * k);
+  s.step_initial = s.step_max = 0.0625;
+  s.step_min = 1e-4;
+  s.newton = testing::tight_kinsol_settings(*a.problem);
+  const cont::Branch b = cont::natural(*a.problem, a.problem->initial_point(), 0.0, s);
+  ASSERT_EQ(b.status, cont::Status::kCompleted) << b.reason;
+  int growths = 0;
+  for (std::size_t k = 1; k < b.points.size(); ++k)
+    growths += b.points[k].x.size() != b.points[k - 1].x.size();
+  // Without the margin: 3 growths (measured).
+  EXPECT_EQ(growths, 1);
 }
 
 }  // namespace
