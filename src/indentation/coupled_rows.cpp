@@ -5,10 +5,15 @@
 namespace si {
 namespace {
 
-// The Woodbury matrix is |R| x |R|, made with ~3 |R|^3 operations per refresh: beyond the
-// elastic face's largest zone (ElasticFace::kMaxZoneNodes; 3000 rows: 72 MB per matrix, ~1e11
-// operations) the block is left to GMRES.
-constexpr int kMaxCoupledRows = 3000;
+// The correction costs |R| solves with H0's factor per refresh (G~_R^T H0^-1 G~_R) and one more
+// per GMRES product; what it saves is GMRES products. Beyond this many rows it costs more than it
+// saves, and the rows condense on their diagonals, GMRES carrying the couplings. Measured
+// (docs/performance.md, "Local contact laws"): with at most 36 rows (0.5 mm quarter cap, 0-2 mm)
+// the correction takes the path from 1.8-2.0 s to 1.3-1.4 s; on the 0.25 mm quarter cap 0-10 mm
+// (|R| up to 620), paired, all rows corrected 45-46 s, at most 800 the same, 400 40-42 s,
+// 200 38-39 s, against 25-27 s without the law; an earlier pair put no correction at all
+// with 200 (32-35 s against 31-34 s).
+constexpr int kMaxCoupledRows = 200;
 // G~_R^T H0^-1 G~_R is made this many columns of H0^-1 G~_R at a time (a blocked solve of
 // num_shell x kSolveColumns), so that Z is never held whole.
 constexpr int kSolveColumns = 64;

@@ -31,8 +31,8 @@ class CoupledRows {
  public:
   // J: num_shell shell rows first, then one row per entry of `rows` (a floored, gradients in
   // chart coordinates, as the preconditioner condenses them). shell: H0's factor. Returns false
-  // if M_RR or the Woodbury matrix is singular (the caller then factors J itself); a block too
-  // large to make (kMaxCoupledRows) is left out (empty(): the rows condense on their
+  // if M_RR or the Woodbury matrix is singular (the caller then factors J itself); more rows than
+  // the correction pays for (kMaxCoupledRows) are left out (empty(): the rows condense on their
   // diagonals and GMRES carries the couplings).
   bool build(const SparseMatrix& J, int num_shell, const std::vector<ContactJacobianRow>& rows,
              const LinearSolver& shell);

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <Eigen/Dense>
 
 #include "core/error.hpp"
@@ -105,6 +107,26 @@ Synthetic make_coupled() {
     for (int j = 0; j < 4; ++j)
       if (j != i) s.coupling(i, j) = s.rows[i].b * C(i, j);
   }
+  return s;
+}
+
+// n active rows on the free eqs 9-11, coupled by C_ij = exp(-|i - j|) / kappa (positive
+// definite): a patch of pressed nodes larger or smaller than the correction's bound.
+Synthetic make_many_coupled(int n) {
+  Synthetic s = make_synthetic();
+  s.rows.clear();
+  for (int i = 0; i < n; ++i) {
+    ContactJacobianRow r;
+    r.eq = {9, 10, 11, -1, -1};
+    r.gradient = {0.6 + 0.001 * i, -0.4, 1.0 - 0.002 * i, 0.0, 0.0};
+    r.b = 0.9 * kKappa;
+    r.a = r.b / kKappa;  // d_a = 0 plus b C_ii
+    s.rows.push_back(r);
+  }
+  s.coupling = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      if (j != i) s.coupling(i, j) = s.rows[i].b * std::exp(-std::abs(i - j)) / kKappa;
   return s;
 }
 
@@ -252,6 +274,24 @@ TEST(ContactJacobianSolver, CoupledRowsStayExactWithAStaleFactor) {
   solver.factorize(J2, kShell, s.rotations, s.rows);
   expect_matches_dense_lu(solver, J2);
   EXPECT_EQ(solver.counters().lu_fallbacks, 0);
+}
+
+// Beyond 200 coupled rows the correction costs more solves than it saves (coupled_rows.cpp,
+// kMaxCoupledRows): the rows condense on their diagonals and GMRES carries the couplings, to the
+// same solution, without the LU; up to 200 the correction makes the preconditioner exact.
+TEST(ContactJacobianSolver, ManyCoupledRowsAreLeftToGmres) {
+  for (int n : {200, 201}) {
+    const Synthetic s = make_many_coupled(n);
+    const SparseMatrix J = s.jacobian();
+    ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
+    solver.factorize(J, kShell, s.rotations, s.rows);
+    expect_matches_dense_lu(solver, J);
+    EXPECT_EQ(solver.counters().lu_fallbacks, 0) << n << " rows";
+    if (n == 200)
+      EXPECT_LE(solver.counters().krylov_products, 2);
+    else
+      EXPECT_GT(solver.counters().krylov_products, 4);
+  }
 }
 
 // An indefinite shell block (past a limit point) has no Cholesky factor: the LU takes over.
