@@ -88,7 +88,7 @@ bool ElasticFace::adapt(const std::vector<int>& nodes,
   for (int i = 0; i < static_cast<int>(nodes.size()); ++i)
     if (lambda[i] > 0) reach = std::max(reach, (x[nodes[i]] - x[body_.first_node()]).norm());
   if (reach <= kZoneFill * zone_radius_) return false;
-  set_zone(std::min(zone_bound_, kZoneGrowth * std::max(zone_radius_, reach)));
+  set_zone(std::min(zone_bound_, kZoneGrowth * reach));
   return true;
 }
 
