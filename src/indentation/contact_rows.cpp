@@ -5,6 +5,8 @@
 #include <limits>
 #include <set>
 
+#include <Eigen/Geometry>
+
 #include "contact/travel_gap.hpp"
 
 namespace si {
@@ -147,8 +149,17 @@ void ContactRows::active_gradients(const TermPoint& p, Triplets& out,
 void ContactRows::add_margin(std::set<int>& added, const std::vector<bool>& is_candidate) const {
   const std::vector<Vector3d>& x = body().face_points();
   const std::vector<int> reached(added.begin(), added.end());
+  // The reached nodes' box widened by the largest margin: most nodes lie outside it.
+  Eigen::AlignedBox3d box;
+  double widest = 0;
+  for (int m : reached) {
+    box.extend(x[m]);
+    widest = std::max(widest, kGrowthMargin * std::sqrt(shell().tributary_area(m)));
+  }
+  box.min().array() -= widest;
+  box.max().array() += widest;
   for (int n = 0; n < static_cast<int>(x.size()); ++n) {
-    if (is_candidate[n] || added.count(n)) continue;
+    if (is_candidate[n] || added.count(n) || !box.contains(x[n])) continue;
     for (int m : reached) {
       const double margin = kGrowthMargin * std::sqrt(shell().tributary_area(m));
       if ((x[n] - x[m]).squaredNorm() <= margin * margin) {

@@ -55,7 +55,6 @@ TEST(CandidateGrowth, SmallInitialSetGrowsAndGivesTheSamePath) {
     EXPECT_NEAR(fa, fb, 1e-7 * (1 + fb)) << "depth " << depth;
   }
   EXPECT_EQ(ba.points.back().x.size(), a.problem->size());
-
   EXPECT_GT(a.problem->evaluate(ba.points.back().x, ba.points.back().p).contact_nodes, 1);
 }
 
