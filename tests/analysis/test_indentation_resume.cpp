@@ -4,11 +4,15 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 #include "../indentation/indentation_test_support.hpp"
 #include "analysis/indentation_run.hpp"
 #include "analysis/path_columns.hpp"
+#include "core/error.hpp"
 
 namespace si {
 namespace {
@@ -100,6 +104,56 @@ TEST(IndentationResume, PseudoArclengthWithYangSunLocalLawReproducesThePath) {
 TEST(IndentationResume, PseudoArclengthWithTheElasticFaceReproducesThePath) {
   expect_resume_reproduces(PathMethod::kPseudoArclength, "shellindent_resume_elastic_face",
                            LocalContactModel::kAnisotropic, LocalSupport::kShell, 8);
+}
+
+// A checkpoint whose zone is not one the run can have reached (below a quarter of its bound,
+// beyond the bound, not one number) is refused as an input error naming the checkpoint, rather
+// than resumed with other couplings than the run that wrote it.
+TEST(IndentationResume, AnEditedZoneIsRefused) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "shellindent_resume_edited_zone";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const CaseFile c = resume_case(PathMethod::kPseudoArclength, LocalContactModel::kAnisotropic,
+                                 LocalSupport::kShell);
+  PathControl control;
+  control.checkpoint = (dir / "checkpoint.json").string();
+  control.checkpoint_interval = 3;
+  {
+    IndentationSetup first(c, 1);
+    int seen = 0;
+    const auto kill = [&](const PathPoint&, const cont::Vector&) {
+      if (++seen == 8) throw Killed();
+      return true;
+    };
+    EXPECT_THROW(run_indentation_path(first, kill, control), Killed);
+  }
+  nlohmann::json written;
+  std::ifstream(control.checkpoint) >> written;
+  const nlohmann::json zone = written["attachment"]["local_state"];
+  ASSERT_TRUE(zone.is_array() && zone.size() == 1 && zone[0].is_number()) << zone.dump();
+  const double radius = zone[0].get<double>();
+  control.resume = true;
+  for (const nlohmann::json& edited :
+       {nlohmann::json::array({-radius}), nlohmann::json::array({1e3 * radius}),
+        nlohmann::json::array({0.01 * radius}), nlohmann::json::array({"x"}),
+        nlohmann::json::array(), nlohmann::json::array({radius, radius})}) {
+    nlohmann::json cp = written;
+    cp["attachment"]["local_state"] = edited;
+    std::ofstream(control.checkpoint) << cp.dump();
+    IndentationSetup second(c, 1);
+    try {
+      run_indentation_path(second, {}, control);
+      ADD_FAILURE() << "resumed with the zone " << edited.dump();
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::kInput) << edited.dump();
+      EXPECT_NE(std::string(e.what()).find("checkpoint"), std::string::npos) << e.what();
+    }
+  }
+  // The checkpoint as written resumes (the refusals above are the edits').
+  std::ofstream(control.checkpoint) << written.dump();
+  IndentationSetup third(c, 1);
+  EXPECT_TRUE(run_indentation_path(third, {}, control).completed);
 }
 
 }  // namespace
