@@ -148,25 +148,24 @@ void ContactRows::active_gradients(const TermPoint& p, Triplets& out,
 // are rows pinned to lambda = 0 while the indenter is far.
 void ContactRows::add_margin(std::set<int>& added, const std::vector<bool>& is_candidate) const {
   const std::vector<Vector3d>& x = body().face_points();
-  const std::vector<int> reached(added.begin(), added.end());
-  // The reached nodes' box widened by the largest margin: most nodes lie outside it.
-  Eigen::AlignedBox3d box;
+  std::vector<std::pair<int, double>> reached;  // node, its margin squared
+  Eigen::AlignedBox3d box;  // the reached nodes' box widened by the largest margin
   double widest = 0;
-  for (int m : reached) {
+  for (int m : added) {
+    const double margin = kGrowthMargin * std::sqrt(shell().tributary_area(m));
+    reached.emplace_back(m, margin * margin);
     box.extend(x[m]);
-    widest = std::max(widest, kGrowthMargin * std::sqrt(shell().tributary_area(m)));
+    widest = std::max(widest, margin);
   }
   box.min().array() -= widest;
   box.max().array() += widest;
   for (int n = 0; n < static_cast<int>(x.size()); ++n) {
-    if (is_candidate[n] || added.count(n) || !box.contains(x[n])) continue;
-    for (int m : reached) {
-      const double margin = kGrowthMargin * std::sqrt(shell().tributary_area(m));
-      if ((x[n] - x[m]).squaredNorm() <= margin * margin) {
+    if (is_candidate[n] || !box.contains(x[n])) continue;
+    for (const auto& [m, margin2] : reached)
+      if ((x[n] - x[m]).squaredNorm() <= margin2) {
         added.insert(n);
         break;
       }
-    }
   }
 }
 
