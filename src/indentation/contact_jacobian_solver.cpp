@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -68,8 +69,6 @@ void ContactJacobianSolver::map_jacobian(const SparseMatrix& J) {
           static_cast<int>(std::lower_bound(begin, end, H_.innerIndexPtr()[k]) - J.innerIndexPtr());
   }
   analyzed_outer_.assign(J.outerIndexPtr(), J.outerIndexPtr() + J.outerSize() + 1);
-  rows_coupled_ =
-      CoupledRows::any(J, num_shell_, static_cast<int>(J.rows()) - num_shell_ - border_);
   row_slots_.clear();
   lu_.reset();
 }
@@ -150,7 +149,7 @@ bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& 
     return false;
   }
   coupled_.clear();
-  if (rows_coupled_ && !coupled_.build(*J_, num_shell_, condensed, *cholesky_)) return false;
+  if (!coupled_.build(coupling_, num_shell_, condensed, *cholesky_)) return false;
   pre_rows_ = condensed;
   pre_rotations_ = rotations_;
   has_preconditioner_ = true;
@@ -161,7 +160,7 @@ bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& 
 
 bool ContactJacobianSolver::refresh_penalized(const std::vector<int>& rows) {
   // Coupled rows (a compliant face) are no constraints to penalise.
-  if (J_ == nullptr || use_lu_ || border_ || rows_coupled_) return false;
+  if (J_ == nullptr || use_lu_ || border_ || !coupling_.empty()) return false;
   // Weight 0 (b = 0: uncondensed) on every row but the listed ones, kappa / floor on those: the
   // floored a of a fully active row (factorize()), whatever its b.
   std::vector<ContactJacobianRow> condensed = rows_;
@@ -199,15 +198,23 @@ SparseMatrix ContactJacobianSolver::chart_gradients(const std::vector<int>& rows
 }
 
 void ContactJacobianSolver::factor_fallback() {
-  if (!lu_) lu_ = make_linear_solver(fallback_);  // analyses J's pattern on first use
   ++counters_.lu_fallbacks;
-  lu_->factorize(*J_);  // throws a numerical error if J is singular
+  if (coupling_.empty()) {
+    if (!lu_) lu_ = make_linear_solver(fallback_);  // analyses J's pattern on first use
+    lu_->factorize(*J_);                            // throws a numerical error if J is singular
+  } else {
+    // The couplings' pattern follows the zone, not J's: analysed anew (the LU is the rare route).
+    coupled_jacobian_ = coupling_.added_to(*J_, num_shell_);
+    lu_ = make_linear_solver(fallback_);
+    lu_->factorize(coupled_jacobian_);
+  }
   use_lu_ = true;
 }
 
 void ContactJacobianSolver::factorize(const SparseMatrix& J, int num_shell,
                                       const std::vector<ShellChart::RotationBlock>& rotations,
-                                      const std::vector<ContactJacobianRow>& rows, int border) {
+                                      const std::vector<ContactJacobianRow>& rows, int border,
+                                      RowCoupling coupling) {
   SI_REQUIRE(border == 0 || border == 1, "contact Jacobian: the border is 0 or 1 unknown");
   SI_REQUIRE(J.isCompressed() && J.rows() == J.cols() &&
                  J.rows() == num_shell + static_cast<int>(rows.size()) + border,
@@ -219,6 +226,7 @@ void ContactJacobianSolver::factorize(const SparseMatrix& J, int num_shell,
       std::equal(analyzed_outer_.begin(), analyzed_outer_.end(), J.outerIndexPtr());
   if (!same_pattern) map_jacobian(J);
   J_ = &J;
+  coupling_ = std::move(coupling);
   rotations_ = rotations;
   // Rotation components of each gradient onto the chart: G~ = T^T G.
   std::vector<int> block_of(num_shell, -1);
@@ -334,7 +342,10 @@ Eigen::VectorXd ContactJacobianSolver::solve(const Eigen::VectorXd& rhs) {
     ++counters_.krylov_solves;
     Eigen::VectorXd x = Eigen::VectorXd::Zero(rhs.size());
     const GmresResult r = gmres(
-        [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) { out = (*J_) * in; },
+        [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+          out = (*J_) * in;
+          coupling_.add_product(in, num_shell_, out);
+        },
         [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) { apply_preconditioner(in, out); },
         rhs, x, gmres_);
     counters_.krylov_products += r.iterations;

@@ -14,9 +14,9 @@
 // converge, the solve falls back to an LU of J (the `fallback` solver, UMFPACK by default).
 // Candidates appended to the set (same shell block) keep the factor: their rows enter the
 // preconditioner uncondensed until the next refresh.
-// Rows that couple each other (Da not diagonal: the elastic face's compliance over its zone)
-// are eliminated exactly: the preconditioner adds a Woodbury correction over the coupled rows to
-// the factor of H (coupled_rows.hpp).
+// Rows that couple each other (Da not diagonal: the elastic face's compliance over its zone,
+// given beside J: row_coupling.hpp) are eliminated exactly: the preconditioner adds a Woodbury
+// correction over the coupled rows to the factor of H (coupled_rows.hpp).
 // A border (one trailing unknown whose row and column couple the contact rows, the power-law
 // local contact's approach alpha, power_law_approach.hpp) stays in J for GMRES; the
 // preconditioner eliminates it by block elimination through the condensed factor P,
@@ -52,12 +52,15 @@ class ContactJacobianSolver {
   ContactJacobianSolver(double kappa, LinearSolverKind fallback, double relative_tolerance = 1e-12);
   ~ContactJacobianSolver();
 
-  // J: the full Jacobian (num_shell shell rows/columns first, then one row/column per row of
+  // J: the Jacobian (num_shell shell rows/columns first, then one row/column per row of
   // `rows`, in order, then `border` (0 or 1) bordering unknowns), its pattern fixed until the
-  // next call. Throws a numerical si::Error if neither route can factor it (singular J).
+  // next call, and the contact rows' couplings kept beside it (row_coupling.hpp; the matrix
+  // solved is J plus them). Throws a numerical si::Error if neither route can factor it
+  // (singular J).
   void factorize(const SparseMatrix& J, int num_shell,
                  const std::vector<ShellChart::RotationBlock>& rotations,
-                 const std::vector<ContactJacobianRow>& rows, int border = 0);
+                 const std::vector<ContactJacobianRow>& rows, int border = 0,
+                 RowCoupling coupling = {});
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
 
   const ContactJacobianCounters& counters() const { return counters_; }
@@ -121,10 +124,11 @@ class ContactJacobianSolver {
   std::vector<ShellChart::RotationBlock> rotations_, pre_rotations_;
   std::vector<ContactJacobianRow> rows_, pre_rows_;
   bool has_preconditioner_ = false;
-  // Whether J's contact rows couple each other (its pattern), and their exact elimination in
-  // the preconditioner made with the current factor.
-  bool rows_coupled_ = false;
+  // The contact rows' couplings of the current linearisation, their exact elimination in the
+  // preconditioner made with the current factor, and J with them for the fallback LU.
+  RowCoupling coupling_;
   CoupledRows coupled_;
+  SparseMatrix coupled_jacobian_;
   int preconditioner_age_ = 0;  // factorize() calls since the Cholesky factor was made
   int last_products_ = 0;       // GMRES products of the last solve
   GmresSettings gmres_;

@@ -21,17 +21,11 @@ void ContactRows::set_candidates(const std::vector<int>& nodes) {
 void ContactRows::add_pattern(Triplets& t) const {
   for (int i = 0; i < size(); ++i)
     add_node_row_pattern(shell().dofs(), candidates_[i], first() + i, approach_->alpha_index(), t);
-  // A non-local law's block (an elastic face's zone: n_zone^2 entries, millions on a fine mesh):
-  // reserved at once, not grown by doubling.
-  std::vector<std::vector<int>> coupled(candidates_.size());
-  std::size_t entries = 0;
-  for (int i = 0; i < size(); ++i) {
-    coupled[i] = approach_->coupled(candidates_, i);
-    entries += coupled[i].size();
-  }
-  t.reserve(t.size() + entries);
-  for (int i = 0; i < size(); ++i)
-    for (int j : coupled[i]) t.emplace_back(first() + i, first() + j, 0.0);
+}
+
+RowCoupling ContactRows::row_coupling() const {
+  if (members_.size() < 2) return {};
+  return {members_, member_b_, coupling_};
 }
 
 void ContactRows::locate(const SparseMatrix& J) {
@@ -39,19 +33,19 @@ void ContactRows::locate(const SparseMatrix& J) {
   for (int i = 0; i < size(); ++i)
     slots_.push_back(
         locate_node_row(shell().dofs(), candidates_[i], first() + i, approach_->alpha_index(), J));
-  coupled_.assign(candidates_.size(), {});
-  coupling_slots_.assign(candidates_.size(), {});
-  for (int i = 0; i < size(); ++i) {
-    coupled_[i] = approach_->coupled(candidates_, i);
-    for (int j : coupled_[i]) coupling_slots_[i].push_back(value_slot(J, first() + i, first() + j));
+  members_ = approach_->coupling_members(candidates_);
+  const int m = static_cast<int>(members_.size());
+  auto C = std::make_shared<Eigen::MatrixXd>(m, m);
+  for (int q = 0; q < m; ++q) {
+    const Eigen::VectorXd& column = approach_->coupling_column(candidates_, members_[q]);
+    for (int p = 0; p < m; ++p) (*C)(q, p) = p == q ? 0.0 : column[members_[p]];
   }
+  coupling_ = std::move(C);
+  member_b_ = Eigen::VectorXd::Zero(m);
 }
 
-void ContactRows::add_layer_coupling(int i, const NcpValue& phi, double* J) const {
-  if (phi.d_b == 0.0) return;
-  for (std::size_t k = 0; k < coupled_[i].size(); ++k)
-    J[coupling_slots_[i][k]] +=
-        phi.d_b * kappa() * approach_->layer_coupling(candidates_, i, coupled_[i][k]);
+void ContactRows::set_layer_coupling(const Eigen::VectorXd& b) {
+  for (int p = 0; p < static_cast<int>(members_.size()); ++p) member_b_[p] = b[members_[p]];
 }
 
 double ContactRows::face_depth(int node, const cont::Vector& z, double h) const {

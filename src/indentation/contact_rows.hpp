@@ -14,6 +14,7 @@
 // and the nodes within a few spacings of those (a margin, so that it grows in few events).
 #pragma once
 
+#include <memory>
 #include <set>
 #include <vector>
 
@@ -57,6 +58,9 @@ class ContactRows : public ContactTerm {
   Eigen::Ref<const cont::Vector> multipliers(const cont::Vector& z) const { return unknowns(z); }
 
   void add_pattern(Triplets& t) const override;
+  // A non-local law's coupled candidates (LocalApproach::coupling_members), their rows' b as of
+  // the last add_jacobian.
+  RowCoupling row_coupling() const override;
   void locate(const SparseMatrix& J) override;
   void residual(const TermPoint& p, cont::Vector& F) override;
   void residual_p(const TermPoint& p, cont::Vector& out) override;
@@ -117,9 +121,10 @@ class ContactRows : public ContactTerm {
   // The entries of candidate i's row and column that are the same for nodal and weighted gaps:
   // the diagonal and, with a power law's alpha, d g / d alpha = the dent's rate (`dent_rate`).
   void add_multiplier_terms(int i, const NcpValue& phi, double dent_rate, double* J) const;
-  // A non-local law's entries of candidate i's row in the other multipliers' columns:
-  // d_b kappa d layer_i / d lambda_j.
-  void add_layer_coupling(int i, const NcpValue& phi, double* J) const;
+  // A non-local law's entries of the rows in the other multipliers' columns,
+  // b_i d layer_i / d lambda_j over its coupled candidates (row_coupling()): b_i = d_b kappa of
+  // candidate i's row, per candidate.
+  void set_layer_coupling(const Eigen::VectorXd& b);
 
   const ShellPart& shell() const { return setting_.shell; }
   const ContactBody& body() const { return setting_.body; }
@@ -128,9 +133,11 @@ class ContactRows : public ContactTerm {
   const ContactRowsSetting setting_;
   std::vector<int> candidates_;
   std::vector<Slots> slots_;
-  // Per candidate: the non-local law's coupled candidates and their value slots in its row.
-  std::vector<std::vector<int>> coupled_;
-  std::vector<std::vector<int>> coupling_slots_;
+  // The non-local law's coupled candidates, d layer / d lambda over them (zero diagonal) and
+  // their rows' b.
+  std::vector<int> members_;
+  std::shared_ptr<const Eigen::MatrixXd> coupling_;
+  Eigen::VectorXd member_b_;
 
  private:
   // Node spacings around each new candidate that a growth takes with it (adapt()).

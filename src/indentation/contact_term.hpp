@@ -20,6 +20,7 @@
 #include "core/sparse.hpp"
 #include "indentation/contact_jacobian_solver.hpp"
 #include "indentation/indentation_state.hpp"
+#include "indentation/row_coupling.hpp"
 #include "shell/director.hpp"
 
 namespace si {
@@ -55,6 +56,9 @@ class ContactTerm {
 
   // r_free -= its forces on the shell's free dofs.
   virtual void add_shell_force(const TermPoint&, cont::Vector&) {}
+  // Its rows' couplings to each other's unknowns kept out of J's pattern (row_coupling.hpp;
+  // members numbered among its own rows), as of the last add_jacobian. Empty: none.
+  virtual RowCoupling row_coupling() const { return {}; }
   // Its rows of F.
   virtual void residual(const TermPoint& p, cont::Vector& F) = 0;
   // Its entries into J's values (J zeroed, then the shell's K, before any term). Condensable

@@ -30,33 +30,7 @@ void CoupledRows::clear() {
   w_.resize(0, 0);
 }
 
-bool CoupledRows::any(const SparseMatrix& J, int num_shell, int num_rows) {
-  for (int c = 0; c < num_rows; ++c)
-    for (SparseMatrix::InnerIterator it(J, num_shell + c); it; ++it) {
-      const Eigen::Index i = it.row() - num_shell;
-      if (i >= 0 && i < num_rows && i != c) return true;
-    }
-  return false;
-}
-
 namespace {
-
-// M's nonzero off-diagonals, in the contact rows' numbering.
-struct Entry {
-  int i, j;
-  double value;
-};
-
-std::vector<Entry> off_diagonals(const SparseMatrix& J, int num_shell, int num_rows) {
-  std::vector<Entry> entries;
-  for (int j = 0; j < num_rows; ++j)
-    for (SparseMatrix::InnerIterator it(J, num_shell + j); it; ++it) {
-      const int i = static_cast<int>(it.row()) - num_shell;
-      if (i >= 0 && i < num_rows && i != j && it.value() != 0.0)
-        entries.push_back({i, j, it.value()});
-    }
-  return entries;
-}
 
 // G~_R: num_shell x |R|, column k the chart gradient of row index[k].
 SparseMatrix chart_gradients(int num_shell, const std::vector<ContactJacobianRow>& rows,
@@ -86,25 +60,19 @@ Eigen::MatrixXd projected_inverse(const SparseMatrix& G, const LinearSolver& she
 
 }  // namespace
 
-bool CoupledRows::build(const SparseMatrix& J, int num_shell,
+bool CoupledRows::build(const RowCoupling& coupling, int num_shell,
                         const std::vector<ContactJacobianRow>& rows, const LinearSolver& shell) {
   clear();
-  const std::vector<Entry> entries = off_diagonals(J, num_shell, static_cast<int>(rows.size()));
-  // R: the rows with couplings and the rows they read that have b != 0.
-  std::vector<char> in_r(rows.size(), 0);
-  for (const Entry& e : entries) {
-    in_r[e.i] = 1;
-    if (rows[e.j].b != 0.0) in_r[e.j] = 1;
-  }
-  std::vector<int> place(rows.size(), -1);  // per contact row: its place in R, or -1
-  for (int i = 0; i < static_cast<int>(rows.size()); ++i)
-    if (in_r[i]) {
-      place[i] = static_cast<int>(index_.size());
-      index_.push_back(i);
-    }
-  const int r = static_cast<int>(index_.size());
-  if (r > kMaxCoupledRows) clear();
-  if (empty()) return true;
+  if (coupling.empty() || coupling.scale.isZero(0.0)) return true;
+  // R: the members that read the others (their b != 0, a pressed row's), with the members they
+  // read whose rows have b != 0; the other members (b = 0) stay outside R, read through M_RN.
+  const int m = static_cast<int>(coupling.members.size());
+  std::vector<int> in_r, outside;  // places among the members
+  for (int p = 0; p < m; ++p)
+    (coupling.scale[p] != 0.0 || rows[coupling.members[p]].b != 0.0 ? in_r : outside).push_back(p);
+  const int r = static_cast<int>(in_r.size());
+  if (r > kMaxCoupledRows) return true;
+  for (int p : in_r) index_.push_back(coupling.members[p]);
 
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(r, r);
   Eigen::VectorXd b(r), b_over_a(r);
@@ -113,12 +81,10 @@ bool CoupledRows::build(const SparseMatrix& J, int num_shell,
     M(k, k) = row.a;
     b[k] = row.b;
     b_over_a[k] = row.b / row.a;
-  }
-  for (const Entry& e : entries) {
-    if (place[e.j] >= 0)
-      M(place[e.i], place[e.j]) = e.value;
-    else
-      outside_.push_back({place[e.i], e.j, e.value});
+    if (coupling.scale[in_r[k]] == 0.0) continue;
+    for (int l = 0; l < r; ++l)
+      if (l != k) M(k, l) = coupling.entry(in_r[k], in_r[l]);
+    for (int q : outside) outside_.push_back({k, coupling.members[q], coupling.entry(in_r[k], q)});
   }
   block_.compute(M);
   if (block_.rcond() > kSingularBlock) {

@@ -1,7 +1,7 @@
 // Contact rows that read each other's multipliers (the elastic face: each gap carries
 // sum_j C_ij lambda_j over its zone, elastic_face.hpp), eliminated exactly inside the condensed
-// preconditioner of contact_jacobian_solver.hpp. With M the contact block of J (the rows'
-// diagonals a_i and their couplings) and B = diag(b), eliminating the rows,
+// preconditioner of contact_jacobian_solver.hpp (row_coupling.hpp). With M the contact block of J
+// (the rows' diagonals a_i and their couplings) and B = diag(b), eliminating the rows,
 //     dlambda = M^-1 (r_lambda - B G~^T dx),
 // leaves the shell with
 //     S = H0 + G~_R W G~_R^T,   W = (M_RR)^-1 B_R - diag(b_R / a_R),
@@ -23,28 +23,26 @@
 
 #include "core/sparse.hpp"
 #include "indentation/contact_jacobian_row.hpp"
+#include "indentation/row_coupling.hpp"
 #include "solvers/linear_solver.hpp"
 
 namespace si {
 
 class CoupledRows {
  public:
-  // J: num_shell shell rows first, then one row per entry of `rows` (a floored, gradients in
-  // chart coordinates, as the preconditioner condenses them). shell: H0's factor. Returns false
-  // if M_RR or the Woodbury matrix is singular (the caller then factors J itself); more rows than
-  // the correction pays for (kMaxCoupledRows) are left out (empty(): the rows condense on their
-  // diagonals and GMRES carries the couplings).
-  bool build(const SparseMatrix& J, int num_shell, const std::vector<ContactJacobianRow>& rows,
-             const LinearSolver& shell);
+  // The contact rows (num_shell shell rows before them in J; a floored, gradients in chart
+  // coordinates, as the preconditioner condenses them) and their couplings. shell: H0's factor.
+  // Returns false if M_RR or the Woodbury matrix is singular (the caller then factors J itself);
+  // more rows than the correction pays for (kMaxCoupledRows) are left out (empty(): the rows
+  // condense on their diagonals and GMRES carries the couplings).
+  bool build(const RowCoupling& coupling, int num_shell,
+             const std::vector<ContactJacobianRow>& rows, const LinearSolver& shell);
   bool empty() const { return index_.empty(); }
   void clear();
   // t = M^-1 r over the contact rows (rows appended since build(): b = 0, their diagonal).
   void solve_rows(const std::vector<ContactJacobianRow>& rows, const double* r, double* t) const;
   // y = H0^-1 rhs on entry, S^-1 rhs on exit (shell: H0's factor, as at build()).
   void correct_shell(Eigen::VectorXd& y, const LinearSolver& shell) const;
-
-  // Whether J's contact block couples any two of its num_rows rows (its pattern).
-  static bool any(const SparseMatrix& J, int num_shell, int num_rows);
 
  private:
   struct Coupling {

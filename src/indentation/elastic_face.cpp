@@ -70,14 +70,10 @@ bool ElasticFace::in_zone(int node) const {
   return (x[node] - x[body_.first_node()]).norm() <= zone_radius_;
 }
 
-std::vector<int> ElasticFace::coupled(const std::vector<int>& nodes, int i) const {
-  std::vector<int> out;
-  if (zone_radius_ < 0 || !in_zone(nodes[i])) return out;
+std::vector<int> ElasticFace::coupling_members(const std::vector<int>& nodes) const {
+  if (zone_radius_ < 0) return {};
   keep_columns_of(nodes);
-  out.reserve(zone_members_.size());
-  for (int j : zone_members_)
-    if (j != i) out.push_back(j);
-  return out;
+  return zone_members_;
 }
 
 bool ElasticFace::adapt(const std::vector<int>& nodes,
@@ -96,14 +92,6 @@ void ElasticFace::set_zone(double radius) {
   zone_radius_ = radius;
   column_nodes_.clear();  // the columns and the members hold the old zone's couplings
   columns_.clear();
-}
-
-// Called per entry of the Newton rows' block, after prepare() (ContactRows::add_jacobian) has
-// matched the columns to these candidates: only their count is checked here (comparing the
-// candidate lists per entry made the assembly O(n_zone^2 n_candidates)).
-double ElasticFace::layer_coupling(const std::vector<int>& nodes, int i, int j) const {
-  if (columns_.size() != nodes.size()) keep_columns_of(nodes);
-  return column(nodes, j)[i];
 }
 
 double ElasticFace::coefficient(const FaceInfluence& kernel, int a, int b) const {

@@ -8,8 +8,9 @@
 //
 // Linear in the multipliers with no unknown of its own: the linear fast path adds C's columns to
 // the Schur complement (linear_indentation.hpp); the Newton paths' rows gain C's entries in the
-// other multipliers' columns (coupled(), layer_coupling()), a dense block over the zone, which
-// the Krylov solver's preconditioner eliminates over the pressed rows (coupled_rows.hpp). The zone:
+// other multipliers' columns (coupling_members(), coupling_column()), a dense block over the zone
+// kept beside J's pattern (row_coupling.hpp), which the Krylov solver's preconditioner eliminates
+// over the pressed rows (coupled_rows.hpp). The zone:
 // the candidates within a radius of the first touch's face point. Outside it a node's approach is
 // its own disc's alone: C_ij = 0 for i != j unless both lie in the zone, so that the Newton paths
 // and the fast path solve one model wherever the contact stays in the zone. The zone follows the
@@ -18,12 +19,12 @@
 // whose pressed nodes reach past kZoneFill of it, it widens to kZoneGrowth times their reach (at
 // most to the bound) and the point is solved again (adapt()): every accepted point has its contact
 // inside the zone. Why: the block's entries go as the zone's radius to the fourth power, and they
-// fill J's products and pattern (a whole-path zone made J twice the shell's size on the paper's cap
-// 0-10 mm). The runs give the fast path zone_bound -1: every pair coupled and no block (it needs
-// none, and a 0-10 mm zone on a fine mesh is 1e8 entries); zone_bound 0 couples every pair on the
-// Newton paths too (the tests' small models). The coefficients are those of the reference
-// configuration (the face's kernel is a small-strain one; with nonlinear kinematics the contact
-// patch stays small against the cap).
+// fill the GMRES products (a whole-path zone made J twice the shell's size on the paper's cap
+// 0-10 mm, when the block was in J's pattern). The runs give the fast path zone_bound -1: every
+// pair coupled and no block (it needs none, and a 0-10 mm zone on a fine mesh is 1e8 entries);
+// zone_bound 0 couples every pair on the Newton paths too (the tests' small models). The
+// coefficients are those of the reference configuration (the face's kernel is a small-strain one;
+// with nonlinear kinematics the contact patch stays small against the cap).
 #pragma once
 
 #include <memory>
@@ -38,7 +39,7 @@ namespace si {
 
 class ElasticFace final : public ContactTerm, public LocalApproach {
  public:
-  static constexpr int kMaxZoneNodes = 3000;  // 9e6 block entries (~0.1 GB in J)
+  static constexpr int kMaxZoneNodes = 3000;  // 9e6 block entries (72 MB of C)
   // The zone widens once its pressed nodes reach past this share of its radius, to this factor
   // times their reach: a few widenings over a path, each a re-solve. Widening to 1.5 times the
   // zone instead (1.9 times the reach) took the 0.25 mm quarter cap's zone to 11.9 mm when the
@@ -76,8 +77,12 @@ class ElasticFace final : public ContactTerm, public LocalApproach {
   double layer_rate(int node) const override { return coefficient(node, node); }
   void add_compliance_column(const std::vector<int>& nodes, int j,
                              Eigen::VectorXd& column) const override;
-  std::vector<int> coupled(const std::vector<int>& nodes, int i) const override;
-  double layer_coupling(const std::vector<int>& nodes, int i, int j) const override;
+  // The zone's members (every candidate with zone_bound 0; none with zone_bound < 0) and C's
+  // columns (kept: the ones prepare() uses).
+  std::vector<int> coupling_members(const std::vector<int>& nodes) const override;
+  const Eigen::VectorXd& coupling_column(const std::vector<int>& nodes, int j) const override {
+    return column(nodes, j);
+  }
   bool adapt(const std::vector<int>& nodes, const Eigen::Ref<const cont::Vector>& lambda) override;
   // The zone's radius (mm) where it follows the contact, else nothing.
   std::vector<double> adapted() const override;

@@ -161,10 +161,18 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
   std::vector<ContactJacobianRow>* condensed = solver_->wants_condensed_rows() ? &rows : nullptr;
   const TermPoint p{z, h, *states};
   for (const auto& t : parts_.terms) t->add_jacobian(p, J, condensed);
+  RowCoupling coupling;  // one term's at most (the contact rows' with an elastic face)
+  for (const auto& t : parts_.terms) {
+    RowCoupling c = t->row_coupling();
+    if (c.empty()) continue;
+    SI_REQUIRE(coupling.empty(), "indentation: more than one term couples its rows");
+    for (int& i : c.members) i += t->first() - nf;
+    coupling = std::move(c);
+  }
   const std::vector<ShellChart::RotationBlock> rotations =
       shell_.to_chart(z.head(nf), r_free, jacobian_);
   try {
-    solver_->factorize(jacobian_, nf, rotations, rows, border_);
+    solver_->factorize(jacobian_, nf, rotations, rows, border_, std::move(coupling));
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     return false;

@@ -1,5 +1,7 @@
 #include "indentation/jacobian_solver.hpp"
 
+#include <utility>
+
 namespace si {
 namespace {
 
@@ -10,15 +12,24 @@ class DirectJacobianSolver final : public JacobianSolver {
   bool wants_condensed_rows() const override { return false; }
   void pattern_changed() override { lu_ = make_linear_solver(kind_); }
   void reset() override { pattern_changed(); }
-  void factorize(const SparseMatrix& J, int, const std::vector<ShellChart::RotationBlock>&,
-                 const std::vector<ContactJacobianRow>&, int) override {
-    lu_->factorize(J);  // the first factorization analyses the pattern
+  void factorize(const SparseMatrix& J, int num_shell,
+                 const std::vector<ShellChart::RotationBlock>&,
+                 const std::vector<ContactJacobianRow>&, int, RowCoupling coupling) override {
+    if (coupling.empty()) {
+      lu_->factorize(J);  // the first factorization analyses the pattern
+      return;
+    }
+    // The couplings' pattern follows the law's zone, which may change with J's pattern unchanged.
+    coupled_ = coupling.added_to(J, num_shell);
+    lu_ = make_linear_solver(kind_);
+    lu_->factorize(coupled_);
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override { return lu_->solve(rhs); }
 
  private:
   LinearSolverKind kind_;
   std::unique_ptr<LinearSolver> lu_;
+  SparseMatrix coupled_;  // J with the couplings
 };
 
 // The preconditioned Krylov solver; its factor survives pattern changes (appended rows).
@@ -30,8 +41,9 @@ class KrylovJacobianSolver final : public JacobianSolver {
   void reset() override { solver_.forget_preconditioner(); }
   void factorize(const SparseMatrix& J, int num_shell,
                  const std::vector<ShellChart::RotationBlock>& rotations,
-                 const std::vector<ContactJacobianRow>& rows, int border) override {
-    solver_.factorize(J, num_shell, rotations, rows, border);
+                 const std::vector<ContactJacobianRow>& rows, int border,
+                 RowCoupling coupling) override {
+    solver_.factorize(J, num_shell, rotations, rows, border, std::move(coupling));
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override { return solver_.solve(rhs); }
   ContactJacobianCounters counters() const override { return solver_.counters(); }

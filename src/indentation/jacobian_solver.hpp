@@ -13,6 +13,7 @@
 #include "continuation/penalized_stability.hpp"
 #include "core/sparse.hpp"
 #include "indentation/contact_jacobian_solver.hpp"
+#include "indentation/row_coupling.hpp"
 #include "model/shell_chart.hpp"
 #include "solvers/linear_solver.hpp"
 
@@ -39,11 +40,13 @@ class JacobianSolver {
   // new solver's, bit for bit (cont::Problem::reset_solver_caches).
   virtual void reset() = 0;
   // J: the num_shell shell rows and columns first, then the terms' (in `rows` for a Krylov
-  // solver), the last `border` of them bordering unknowns (ContactTerm::borders). Throws a
-  // numerical si::Error if J cannot be factored.
+  // solver), the last `border` of them bordering unknowns (ContactTerm::borders); `coupling`:
+  // the contact rows' couplings beside J (row_coupling.hpp), part of the matrix solved. Throws
+  // a numerical si::Error if it cannot be factored.
   virtual void factorize(const SparseMatrix& J, int num_shell,
                          const std::vector<ShellChart::RotationBlock>& rotations,
-                         const std::vector<ContactJacobianRow>& rows, int border) = 0;
+                         const std::vector<ContactJacobianRow>& rows, int border,
+                         RowCoupling coupling) = 0;
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) = 0;
   // The Krylov solver's work (zero for a direct LU).
   virtual ContactJacobianCounters counters() const { return {}; }

@@ -10,6 +10,7 @@
 
 #include "contact/hertz_dent.hpp"
 #include "continuation/problem.hpp"
+#include "core/error.hpp"
 
 namespace si {
 
@@ -36,14 +37,15 @@ class LocalApproach {
                                      Eigen::VectorXd& column) const {
     column[j] += layer_rate(nodes[j]);
   }
-  // A non-local law's coupling of candidate i's approach to other candidates' multipliers: the
-  // j != i it depends on (the Jacobian's pattern; fixed for a candidate set) and
-  // d layer_i / d lambda_j for them, mm/N.
-  virtual std::vector<int> coupled(const std::vector<int>& /*nodes*/, int /*i*/) const {
-    return {};
-  }
-  virtual double layer_coupling(const std::vector<int>& /*nodes*/, int /*i*/, int /*j*/) const {
-    return 0.0;
+  // A non-local law's coupling of the candidates' approaches to each other's multipliers: the
+  // candidates (indices into `nodes`, ascending) whose approaches each depend on all of their
+  // multipliers (a dense block of the Jacobian, row_coupling.hpp; fixed for a candidate set and
+  // the law's adapted state), and, for j among them, column j of d layer / d lambda over all the
+  // candidates, mm/N (valid after coupling_members() for the same candidates).
+  virtual std::vector<int> coupling_members(const std::vector<int>& /*nodes*/) const { return {}; }
+  virtual const Eigen::VectorXd& coupling_column(const std::vector<int>& /*nodes*/,
+                                                 int /*j*/) const {
+    throw Error(ErrorKind::kInternal, "local approach: a coupling column of a law without any");
   }
   // After an accepted point (ContactRows::adapt): a non-local law may widen its coupling as the
   // pressed candidates (lambda > 0) near its edge; true if it did (the pattern is then rebuilt

@@ -104,6 +104,7 @@ void NodalGaps::add_jacobian(const TermPoint& p, double* J,
                              std::vector<ContactJacobianRow>* condensed) {
   prepare_layer(p);
   const bool nonlinear = shell().nonlinear();
+  Eigen::VectorXd row_b(size());
   for (int i = 0; i < size(); ++i) {
     const double lambda = p.z[first() + i];
     const DentValue dent = dent_at(candidates_[i], p.z);
@@ -114,7 +115,7 @@ void NodalGaps::add_jacobian(const TermPoint& p, double* J,
     if (condensed) condensed->push_back(condensed_node_row(s, g, multiplier_diagonal(i, phi), b));
     add_node_row_entries(s, g, lambda, b, nonlinear && lambda != 0.0, J);
     add_multiplier_terms(i, phi, g.hits ? dent.rate : 0.0, J);
-    add_layer_coupling(i, phi, J);
+    row_b[i] = b;
     const double k = rise_factor(i, g);
     if (k == 0.0) continue;
     for (std::size_t j = 0; j < rise_rows_[i].size(); ++j) {
@@ -123,6 +124,7 @@ void NodalGaps::add_jacobian(const TermPoint& p, double* J,
       J[rise_slots_[i][j].second] -= c;
     }
   }
+  set_layer_coupling(row_b);
 }
 
 SparseMatrix NodalGaps::gap_matrix(const TermPoint& reference) const {

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include <Eigen/Dense>
 
@@ -24,7 +25,9 @@ struct Synthetic {
   Eigen::MatrixXd D = Eigen::MatrixXd::Zero(kShell, kShell);  // drilling-like, unsymmetric
   std::vector<ShellChart::RotationBlock> rotations;
   std::vector<ContactJacobianRow> rows;
-  Eigen::MatrixXd coupling;  // the contact block's off-diagonals (rows x rows), or empty
+  // The rows' compliance C (rows x rows, mm/N, symmetric), or empty: row i of the contact block
+  // reads b_i C_ij in column j != i, kept beside J (row_coupling.hpp).
+  Eigen::MatrixXd compliance;
 
   Eigen::MatrixXd full_T() const {
     Eigen::MatrixXd T = Eigen::MatrixXd::Identity(kShell, kShell);
@@ -54,7 +57,31 @@ struct Synthetic {
       J.block(m, 0, 1, kShell) = rows[i].b * (T.transpose() * G).transpose();
       J(m, m) = rows[i].a;
     }
-    if (coupling.size() > 0) J.bottomRightCorner(coupling.rows(), coupling.cols()) += coupling;
+    return J.sparseView();
+  }
+
+  RowCoupling coupling() const {
+    RowCoupling c;
+    if (compliance.size() == 0) return c;
+    const int n = static_cast<int>(rows.size());
+    auto C = std::make_shared<Eigen::MatrixXd>(compliance.transpose());
+    C->diagonal().setZero();
+    c.coefficients = C;
+    c.scale.resize(n);
+    for (int i = 0; i < n; ++i) {
+      c.members.push_back(i);
+      c.scale[i] = rows[i].b;
+    }
+    return c;
+  }
+
+  // The matrix solved: J with the couplings, assembled densely (a different route from
+  // RowCoupling's).
+  SparseMatrix full() const {
+    Eigen::MatrixXd J = Eigen::MatrixXd(jacobian());
+    for (Eigen::Index i = 0; i < compliance.rows(); ++i)
+      for (Eigen::Index j = 0; j < compliance.cols(); ++j)
+        if (j != i) J(kShell + i, kShell + j) += rows[i].b * compliance(i, j);
     return J.sparseView();
   }
 };
@@ -90,8 +117,8 @@ Synthetic make_synthetic(double shell_sign = 1.0) {
 // contact block is d_a,i e_i + b_i C_i with C a symmetric positive compliance (mm/N), its
 // diagonal a_i = d_a,i + b_i C_ii. Rows 0 (active) and 1 (partly active) and a fourth, active row
 // on the free eqs 9-11 couple; the inactive row 2 (b = 0) reads nothing but is read by them.
-Synthetic make_coupled() {
-  Synthetic s = make_synthetic();
+Synthetic make_coupled(double shell_sign = 1.0) {
+  Synthetic s = make_synthetic(shell_sign);
   ContactJacobianRow free_node;
   free_node.eq = {9, 10, 11, -1, -1};
   free_node.gradient = {0.6, -0.4, 1.0, 0.0, 0.0};
@@ -101,12 +128,8 @@ Synthetic make_coupled() {
   Eigen::Matrix4d C;
   C << 1.0, 0.4, 0.2, 0.3, 0.4, 1.1, 0.25, 0.2, 0.2, 0.25, 0.9, 0.1, 0.3, 0.2, 0.1, 1.2;
   C /= kKappa;
-  s.coupling = Eigen::MatrixXd::Zero(4, 4);
-  for (int i = 0; i < 4; ++i) {
-    s.rows[i].a += s.rows[i].b * C(i, i);
-    for (int j = 0; j < 4; ++j)
-      if (j != i) s.coupling(i, j) = s.rows[i].b * C(i, j);
-  }
+  s.compliance = C;
+  for (int i = 0; i < 4; ++i) s.rows[i].a += s.rows[i].b * C(i, i);
   return s;
 }
 
@@ -123,10 +146,9 @@ Synthetic make_many_coupled(int n) {
     r.a = r.b / kKappa;  // d_a = 0 plus b C_ii
     s.rows.push_back(r);
   }
-  s.coupling = Eigen::MatrixXd::Zero(n, n);
+  s.compliance = Eigen::MatrixXd::Zero(n, n);
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      if (j != i) s.coupling(i, j) = s.rows[i].b * std::exp(-std::abs(i - j)) / kKappa;
+    for (int j = 0; j < n; ++j) s.compliance(i, j) = std::exp(-std::abs(i - j)) / kKappa;
   return s;
 }
 
@@ -142,8 +164,8 @@ void expect_matches_dense_lu(ContactJacobianSolver& solver, const SparseMatrix& 
 void expect_exact_preconditioner(const Synthetic& s) {
   const SparseMatrix J = s.jacobian();
   ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
-  solver.factorize(J, kShell, s.rotations, s.rows);
-  expect_matches_dense_lu(solver, J);
+  solver.factorize(J, kShell, s.rotations, s.rows, 0, s.coupling());
+  expect_matches_dense_lu(solver, s.full());
   EXPECT_EQ(solver.counters().cholesky, 1);
   EXPECT_EQ(solver.counters().lu_fallbacks, 0);
   EXPECT_LE(solver.counters().krylov_products, 2);
@@ -249,7 +271,7 @@ TEST(ContactJacobianSolver, CoupledRowsAreEliminatedExactly) {
   expect_exact_preconditioner(s);
   const SparseMatrix J = s.jacobian();
   ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
-  solver.factorize(J, kShell, s.rotations, s.rows);
+  solver.factorize(J, kShell, s.rotations, s.rows, 0, s.coupling());
   EXPECT_FALSE(solver.refresh_penalized({0, 3}));
 }
 
@@ -259,20 +281,20 @@ TEST(ContactJacobianSolver, CoupledRowsStayExactWithAStaleFactor) {
   Synthetic s = make_coupled();
   ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
   const SparseMatrix J1 = s.jacobian();
-  solver.factorize(J1, kShell, s.rotations, s.rows);
-  expect_matches_dense_lu(solver, J1);
-  s.coupling *= 1.3;
+  solver.factorize(J1, kShell, s.rotations, s.rows, 0, s.coupling());
+  expect_matches_dense_lu(solver, s.full());
+  s.compliance *= 1.3;
   ContactJacobianRow appended = s.rows[1];
   appended.a = 0.5;
-  appended.b = 0.0;
+  appended.b = 0.0;  // reads nothing; row 0 reads it
   s.rows.push_back(appended);
-  s.coupling.conservativeResize(5, 5);
-  s.coupling.row(4).setZero();
-  s.coupling.col(4).setZero();
-  s.coupling(0, 4) = 0.2 * s.rows[0].b / kKappa;
+  s.compliance.conservativeResize(5, 5);
+  s.compliance.row(4).setZero();
+  s.compliance.col(4).setZero();
+  s.compliance(0, 4) = s.compliance(4, 0) = 0.2 / kKappa;
   const SparseMatrix J2 = s.jacobian();
-  solver.factorize(J2, kShell, s.rotations, s.rows);
-  expect_matches_dense_lu(solver, J2);
+  solver.factorize(J2, kShell, s.rotations, s.rows, 0, s.coupling());
+  expect_matches_dense_lu(solver, s.full());
   EXPECT_EQ(solver.counters().lu_fallbacks, 0);
 }
 
@@ -284,8 +306,8 @@ TEST(ContactJacobianSolver, ManyCoupledRowsAreLeftToGmres) {
     const Synthetic s = make_many_coupled(n);
     const SparseMatrix J = s.jacobian();
     ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
-    solver.factorize(J, kShell, s.rotations, s.rows);
-    expect_matches_dense_lu(solver, J);
+    solver.factorize(J, kShell, s.rotations, s.rows, 0, s.coupling());
+    expect_matches_dense_lu(solver, s.full());
     EXPECT_EQ(solver.counters().lu_fallbacks, 0) << n << " rows";
     if (n == 200)
       EXPECT_LE(solver.counters().krylov_products, 2);
@@ -301,6 +323,16 @@ TEST(ContactJacobianSolver, IndefiniteShellBlockFallsBackToLu) {
   ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
   solver.factorize(J, kShell, s.rotations, s.rows);
   expect_matches_dense_lu(solver, J);
+  EXPECT_EQ(solver.counters().lu_fallbacks, 1);
+}
+
+// The LU that takes over factors J with the coupled rows' block (RowCoupling::added_to): the
+// solution is still that of the coupled matrix.
+TEST(ContactJacobianSolver, IndefiniteShellBlockWithCoupledRowsFallsBackToTheirLu) {
+  const Synthetic s = make_coupled(-1.0);
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
+  solver.factorize(s.jacobian(), kShell, s.rotations, s.rows, 0, s.coupling());
+  expect_matches_dense_lu(solver, s.full());
   EXPECT_EQ(solver.counters().lu_fallbacks, 1);
 }
 

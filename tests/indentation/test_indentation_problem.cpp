@@ -232,7 +232,8 @@ TEST(IndentationProblem, AnisotropicPlateLaw_JacobianMatchesFiniteDifferences) {
 
 // The elastic face (local_support: shell): its coupling of every row to every other
 // multiplier (the dense block of C over the candidates) and its diagonal, against finite
-// differences, nonlinear (quarter: mirror images) and linear (full).
+// differences, nonlinear (quarter: mirror images) and linear (full); the block beside J's
+// pattern (row_coupling.hpp) through GMRES's products and through the LU's assembled matrix.
 TEST(IndentationProblem, ElasticFace_JacobianMatchesFiniteDifferences) {
   const CaseFile c = coarse_cap_case("nonlinear", "[0/90]2S", "quarter");
   const LocalContactLaw law =
@@ -240,6 +241,10 @@ TEST(IndentationProblem, ElasticFace_JacobianMatchesFiniteDifferences) {
   ASSERT_EQ(law.kind, LocalLawKind::kElasticFace);
   IndentationFixture f(c, exact_solves(with_local(law)));
   expect_jacobian_matches_fd(*f.problem, 0.3);
+  IndentationOptions lu = with_local(law);
+  lu.linear_solver = JacobianSolverKind::kUmfpack;
+  IndentationFixture d(c, lu);
+  expect_jacobian_matches_fd(*d.problem, 0.3);
   IndentationFixture g(coarse_cap_case("linear", "[0/90]2S"), exact_solves(with_local(law)));
   expect_jacobian_matches_fd(*g.problem, 0.3);
 }
