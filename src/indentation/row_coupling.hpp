@@ -5,7 +5,7 @@
 // only the pressed rows have b != 0: in J it was most of J's entries on a fine mesh (3.4e6 of
 // 4.3e6 on the 0.25 mm quarter cap at 10 mm, a zone of 1,858 nodes around ~550 pressed ones),
 // zeros over the unpressed rows in every GMRES product and assembly. Here a product costs the
-// pressed rows times the zone, and C is laid once per zone. The LU routes assemble it
+// pressed rows times the zone, and C is gathered once per pattern. The LU routes assemble it
 // (added_to()).
 #pragma once
 
