@@ -199,13 +199,16 @@ SparseMatrix ContactJacobianSolver::chart_gradients(const std::vector<int>& rows
 
 void ContactJacobianSolver::factor_fallback() {
   ++counters_.lu_fallbacks;
+  // The couplings' pattern follows the zone, which may change with J's pattern unchanged.
+  if (lu_ && coupling_.members != lu_members_) lu_.reset();
+  if (!lu_) {
+    lu_ = make_linear_solver(fallback_);  // analyses the pattern on first use
+    lu_members_ = coupling_.members;
+  }
   if (coupling_.empty()) {
-    if (!lu_) lu_ = make_linear_solver(fallback_);  // analyses J's pattern on first use
-    lu_->factorize(*J_);                            // throws a numerical error if J is singular
+    lu_->factorize(*J_);  // throws a numerical error if J is singular
   } else {
-    // The couplings' pattern follows the zone, not J's: analysed anew (the LU is the rare route).
     coupled_jacobian_ = coupling_.added_to(*J_, num_shell_);
-    lu_ = make_linear_solver(fallback_);
     lu_->factorize(coupled_jacobian_);
   }
   use_lu_ = true;

@@ -129,8 +129,9 @@ class ContactJacobianSolver {
   RowCoupling coupling_;
   CoupledRows coupled_;
   SparseMatrix coupled_jacobian_;
-  int preconditioner_age_ = 0;  // factorize() calls since the Cholesky factor was made
-  int last_products_ = 0;       // GMRES products of the last solve
+  std::vector<int> lu_members_;  // the couplings' rows the fallback LU's analysis was made with
+  int preconditioner_age_ = 0;   // factorize() calls since the Cholesky factor was made
+  int last_products_ = 0;        // GMRES products of the last solve
   GmresSettings gmres_;
   ContactJacobianCounters counters_;
 };

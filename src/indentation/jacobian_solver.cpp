@@ -10,18 +10,25 @@ class DirectJacobianSolver final : public JacobianSolver {
  public:
   explicit DirectJacobianSolver(LinearSolverKind kind) : kind_(kind) { pattern_changed(); }
   bool wants_condensed_rows() const override { return false; }
-  void pattern_changed() override { lu_ = make_linear_solver(kind_); }
+  void pattern_changed() override {
+    lu_ = make_linear_solver(kind_);
+    members_.clear();
+  }
   void reset() override { pattern_changed(); }
   void factorize(const SparseMatrix& J, int num_shell,
                  const std::vector<ShellChart::RotationBlock>&,
                  const std::vector<ContactJacobianRow>&, int, RowCoupling coupling) override {
+    // The couplings' pattern follows the law's zone, which may change with J's pattern unchanged:
+    // a new analysis then.
+    if (coupling.members != members_) {
+      lu_ = make_linear_solver(kind_);
+      members_ = coupling.members;
+    }
     if (coupling.empty()) {
       lu_->factorize(J);  // the first factorization analyses the pattern
       return;
     }
-    // The couplings' pattern follows the law's zone, which may change with J's pattern unchanged.
     coupled_ = coupling.added_to(J, num_shell);
-    lu_ = make_linear_solver(kind_);
     lu_->factorize(coupled_);
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override { return lu_->solve(rhs); }
@@ -29,7 +36,8 @@ class DirectJacobianSolver final : public JacobianSolver {
  private:
   LinearSolverKind kind_;
   std::unique_ptr<LinearSolver> lu_;
-  SparseMatrix coupled_;  // J with the couplings
+  SparseMatrix coupled_;      // J with the couplings
+  std::vector<int> members_;  // the couplings' rows the LU's analysis was made with
 };
 
 // The preconditioned Krylov solver; its factor survives pattern changes (appended rows).

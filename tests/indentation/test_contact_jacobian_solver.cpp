@@ -328,12 +328,30 @@ TEST(ContactJacobianSolver, IndefiniteShellBlockFallsBackToLu) {
 
 // The LU that takes over factors J with the coupled rows' block (RowCoupling::added_to): the
 // solution is still that of the coupled matrix.
+// Couplings over fewer rows (a zone that changed while J's pattern did not) get an LU analysed
+// anew; the same rows again reuse it.
 TEST(ContactJacobianSolver, IndefiniteShellBlockWithCoupledRowsFallsBackToTheirLu) {
-  const Synthetic s = make_coupled(-1.0);
+  Synthetic s = make_coupled(-1.0);
   ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
   solver.factorize(s.jacobian(), kShell, s.rotations, s.rows, 0, s.coupling());
   expect_matches_dense_lu(solver, s.full());
   EXPECT_EQ(solver.counters().lu_fallbacks, 1);
+  // Rows 0 and 1 alone couple: their 2 x 2 block, the rows' b.
+  const Eigen::MatrixXd pair = s.compliance.topLeftCorner(2, 2);
+  s.compliance.setZero();
+  s.compliance.topLeftCorner(2, 2) = pair;
+  RowCoupling two;
+  two.members = {0, 1};
+  two.scale = Eigen::Vector2d(s.rows[0].b, s.rows[1].b);
+  auto C = std::make_shared<Eigen::MatrixXd>(pair.transpose());
+  C->diagonal().setZero();
+  two.coefficients = C;
+  const SparseMatrix J = s.jacobian();
+  for (int k = 0; k < 2; ++k) {
+    solver.factorize(J, kShell, s.rotations, s.rows, 0, two);
+    expect_matches_dense_lu(solver, s.full());
+  }
+  EXPECT_EQ(solver.counters().lu_fallbacks, 3);
 }
 
 }  // namespace
