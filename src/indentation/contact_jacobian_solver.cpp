@@ -24,7 +24,7 @@ constexpr int kMaxPreconditionerAge = 20;
 
 ContactJacobianSolver::ContactJacobianSolver(double kappa, LinearSolverKind fallback,
                                              double relative_tolerance)
-    : kappa_(kappa), fallback_(fallback) {
+    : kappa_(kappa), lu_(fallback) {
   SI_REQUIRE(relative_tolerance > 0 && relative_tolerance < 1,
              "contact Jacobian: the Krylov tolerance must lie in (0, 1)");
   gmres_.relative_tolerance = relative_tolerance;
@@ -70,7 +70,7 @@ void ContactJacobianSolver::map_jacobian(const SparseMatrix& J) {
   }
   analyzed_outer_.assign(J.outerIndexPtr(), J.outerIndexPtr() + J.outerSize() + 1);
   row_slots_.clear();
-  lu_.reset();
+  lu_.forget();
 }
 
 void ContactJacobianSolver::transpose_transform(
@@ -199,18 +199,7 @@ SparseMatrix ContactJacobianSolver::chart_gradients(const std::vector<int>& rows
 
 void ContactJacobianSolver::factor_fallback() {
   ++counters_.lu_fallbacks;
-  // The couplings' pattern follows the zone, which may change with J's pattern unchanged.
-  if (lu_ && coupling_.members != lu_members_) lu_.reset();
-  if (!lu_) {
-    lu_ = make_linear_solver(fallback_);  // analyses the pattern on first use
-    lu_members_ = coupling_.members;
-  }
-  if (coupling_.empty()) {
-    lu_->factorize(*J_);  // throws a numerical error if J is singular
-  } else {
-    coupled_jacobian_ = coupling_.added_to(*J_, num_shell_);
-    lu_->factorize(coupled_jacobian_);
-  }
+  lu_.factorize(*J_, num_shell_, coupling_);  // throws a numerical error if singular
   use_lu_ = true;
 }
 
@@ -285,7 +274,7 @@ bool ContactJacobianSolver::prepare_border() {
 }
 
 void ContactJacobianSolver::forget_preconditioner() {
-  lu_.reset();  // UMFPACK's symbolic analysis reads the values of the matrix it was made from
+  lu_.forget();  // UMFPACK's symbolic analysis reads the values of the matrix it was made from
   has_preconditioner_ = false;
   preconditioner_age_ = 0;
   last_products_ = 0;
@@ -358,7 +347,7 @@ Eigen::VectorXd ContactJacobianSolver::solve(const Eigen::VectorXd& rhs) {
     if (border_ && !prepare_border()) break;
   }
   if (!use_lu_) factor_fallback();
-  return lu_->solve(rhs);
+  return lu_.solve(rhs);
 }
 
 }  // namespace si

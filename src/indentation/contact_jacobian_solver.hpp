@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "indentation/contact_jacobian_row.hpp"
+#include "indentation/coupled_lu.hpp"
 #include "indentation/coupled_rows.hpp"
 #include "model/shell_chart.hpp"
 #include "solvers/gmres.hpp"
@@ -103,7 +104,6 @@ class ContactJacobianSolver {
   int shell_slot(int row, int col) const;
 
   double kappa_;
-  LinearSolverKind fallback_;
   const SparseMatrix* J_ = nullptr;
   int num_shell_ = -1;
   // Shell block of J: pattern, the slot of each entry's transpose, its slots in J.
@@ -114,7 +114,7 @@ class ContactJacobianSolver {
   std::vector<RotationSlots> rotation_slots_;   // per (rotation block, column of its rows)
   std::vector<std::array<int, 25>> row_slots_;  // per contact row: its 5x5 block in H_
   std::unique_ptr<LinearSolver> cholesky_;
-  std::unique_ptr<LinearSolver> lu_;
+  CoupledLu lu_;         // the fallback, with the rows' couplings
   bool use_lu_ = false;  // this factorize() went to the fallback LU
   int border_ = 0;
   Eigen::VectorXd border_column_, border_row_, border_solution_;  // c, d, P^-1 c
@@ -124,14 +124,12 @@ class ContactJacobianSolver {
   std::vector<ShellChart::RotationBlock> rotations_, pre_rotations_;
   std::vector<ContactJacobianRow> rows_, pre_rows_;
   bool has_preconditioner_ = false;
-  // The contact rows' couplings of the current linearisation, their exact elimination in the
-  // preconditioner made with the current factor, and J with them for the fallback LU.
+  // The contact rows' couplings of the current linearisation and their exact elimination in the
+  // preconditioner made with the current factor.
   RowCoupling coupling_;
   CoupledRows coupled_;
-  SparseMatrix coupled_jacobian_;
-  std::vector<int> lu_members_;  // the couplings' rows the fallback LU's analysis was made with
-  int preconditioner_age_ = 0;   // factorize() calls since the Cholesky factor was made
-  int last_products_ = 0;        // GMRES products of the last solve
+  int preconditioner_age_ = 0;  // factorize() calls since the Cholesky factor was made
+  int last_products_ = 0;       // GMRES products of the last solve
   GmresSettings gmres_;
   ContactJacobianCounters counters_;
 };

@@ -2,42 +2,28 @@
 
 #include <utility>
 
+#include "indentation/coupled_lu.hpp"
+
 namespace si {
 namespace {
 
-// A sparse LU of the whole Jacobian, made anew (pattern analysed) after a pattern change.
+// A sparse LU of the whole Jacobian (with its rows' couplings), made anew (pattern analysed)
+// after a pattern change.
 class DirectJacobianSolver final : public JacobianSolver {
  public:
-  explicit DirectJacobianSolver(LinearSolverKind kind) : kind_(kind) { pattern_changed(); }
+  explicit DirectJacobianSolver(LinearSolverKind kind) : lu_(kind) {}
   bool wants_condensed_rows() const override { return false; }
-  void pattern_changed() override {
-    lu_ = make_linear_solver(kind_);
-    members_.clear();
-  }
+  void pattern_changed() override { lu_.forget(); }
   void reset() override { pattern_changed(); }
   void factorize(const SparseMatrix& J, int num_shell,
                  const std::vector<ShellChart::RotationBlock>&,
                  const std::vector<ContactJacobianRow>&, int, RowCoupling coupling) override {
-    // The couplings' pattern follows the law's zone, which may change with J's pattern unchanged:
-    // a new analysis then.
-    if (coupling.members != members_) {
-      lu_ = make_linear_solver(kind_);
-      members_ = coupling.members;
-    }
-    if (coupling.empty()) {
-      lu_->factorize(J);  // the first factorization analyses the pattern
-      return;
-    }
-    coupled_ = coupling.added_to(J, num_shell);
-    lu_->factorize(coupled_);
+    lu_.factorize(J, num_shell, coupling);
   }
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override { return lu_->solve(rhs); }
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override { return lu_.solve(rhs); }
 
  private:
-  LinearSolverKind kind_;
-  std::unique_ptr<LinearSolver> lu_;
-  SparseMatrix coupled_;      // J with the couplings
-  std::vector<int> members_;  // the couplings' rows the LU's analysis was made with
+  CoupledLu lu_;
 };
 
 // The preconditioned Krylov solver; its factor survives pattern changes (appended rows).
