@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <set>
 
 #include <Eigen/Geometry>
@@ -24,8 +25,7 @@ void ContactRows::add_pattern(Triplets& t) const {
 }
 
 RowCoupling ContactRows::row_coupling() const {
-  if (members_.size() < 2) return {};
-  return {members_, member_b_, coupling_};
+  return coupling_.empty() ? RowCoupling{} : coupling_;
 }
 
 void ContactRows::locate(const SparseMatrix& J) {
@@ -33,19 +33,21 @@ void ContactRows::locate(const SparseMatrix& J) {
   for (int i = 0; i < size(); ++i)
     slots_.push_back(
         locate_node_row(shell().dofs(), candidates_[i], first() + i, approach_->alpha_index(), J));
-  members_ = approach_->coupling_members(candidates_);
-  const int m = static_cast<int>(members_.size());
+  coupling_.members = approach_->coupling_members(candidates_);
+  const std::vector<int>& members = coupling_.members;
+  const int m = static_cast<int>(members.size());
   auto C = std::make_shared<Eigen::MatrixXd>(m, m);
   for (int q = 0; q < m; ++q) {
-    const Eigen::VectorXd& column = approach_->coupling_column(candidates_, members_[q]);
-    for (int p = 0; p < m; ++p) (*C)(q, p) = p == q ? 0.0 : column[members_[p]];
+    const Eigen::VectorXd& column = approach_->coupling_column(candidates_, members[q]);
+    for (int p = 0; p < m; ++p) (*C)(q, p) = p == q ? 0.0 : column[members[p]];
   }
-  coupling_ = std::move(C);
-  member_b_ = Eigen::VectorXd::Zero(m);
+  coupling_.coefficients = std::move(C);
+  coupling_.scale = Eigen::VectorXd::Zero(m);
 }
 
 void ContactRows::set_layer_coupling(const Eigen::VectorXd& b) {
-  for (int p = 0; p < static_cast<int>(members_.size()); ++p) member_b_[p] = b[members_[p]];
+  for (int p = 0; p < static_cast<int>(coupling_.members.size()); ++p)
+    coupling_.scale[p] = b[coupling_.members[p]];
 }
 
 double ContactRows::face_depth(int node, const cont::Vector& z, double h) const {

@@ -14,7 +14,6 @@
 // and the nodes within a few spacings of those (a margin, so that it grows in few events).
 #pragma once
 
-#include <memory>
 #include <set>
 #include <vector>
 
@@ -133,11 +132,9 @@ class ContactRows : public ContactTerm {
   const ContactRowsSetting setting_;
   std::vector<int> candidates_;
   std::vector<Slots> slots_;
-  // The non-local law's coupled candidates, d layer / d lambda over them (zero diagonal) and
-  // their rows' b.
-  std::vector<int> members_;
-  std::shared_ptr<const Eigen::MatrixXd> coupling_;
-  Eigen::VectorXd member_b_;
+  // The non-local law's coupled candidates, d layer / d lambda over them and their rows' b
+  // (members numbered among these rows).
+  RowCoupling coupling_;
 
  private:
   // Node spacings around each new candidate that a growth takes with it (adapt()).
