@@ -60,6 +60,16 @@ struct LevelCrossing {
   double value_tolerance = 0.0;
 };
 
+// A step the tracer retries: the corrector did not converge, the point could not be analysed or
+// the tangent turned too far (the reason says which). The step is retried at `retry` (half of
+// `step`), or the run ends when `step` was already step_min (retry = 0).
+struct StepFailure {
+  double p = 0.0;     // of the point the step started from
+  double step = 0.0;  // the failed step's size
+  double retry = 0.0;
+  std::string reason;
+};
+
 struct Settings {
   Method method = Method::kPseudoArclength;
   Predictor predictor = Predictor::kTangent;
@@ -79,6 +89,9 @@ struct Settings {
   // A step whose tangent turned by more than this is treated as failed (guards against jumping
   // to another branch).
   double max_turn_deg = 60.0;
+  // Told of each failed step as it happens (a step that keeps failing is how a stall shows;
+  // each failure may cost many solves). Empty: none.
+  std::function<void(const StepFailure&)> on_step_failure;
 
   // Parameter bounds: the run stops at the bound, landed on exactly (the last point has p = bound):
   // the step that would cross it is shortened to reach it (docs/theory/continuation.md §3).

@@ -131,12 +131,16 @@ class Tracer {
       std::string why;
       if (!try_step(ds, step, b, why)) {
         ++branch_.failed_steps;
-        if (ds <= settings_.step_min * (1.0 + 1e-12)) {
+        const bool last = ds <= settings_.step_min * (1.0 + 1e-12);
+        const double retry = last ? 0.0 : std::max(0.5 * ds, settings_.step_min);
+        if (settings_.on_step_failure)
+          settings_.on_step_failure({state_.current.point.p, ds, retry, why});
+        if (last) {
           finish(Status::kStepTooSmall, "a step of " + fmt(ds) + " from p = " +
                                             fmt(state_.current.point.p) + " failed: " + why);
           return;
         }
-        state_.step = std::max(0.5 * ds, settings_.step_min);
+        state_.step = retry;
         continue;
       }
       const bool at_bound = clip_to_target(step, b);

@@ -414,6 +414,7 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
   settings.checkpoint_interval = control.checkpoint.empty() ? 0 : control.checkpoint_interval;
   settings.checkpoint_keeps_x = false;  // the points live in the attachment
   settings.checkpoint_attachment = [&] { return path_attachment(*s.problem, r, control); };
+  settings.on_step_failure = control.on_step_failure;
   PathRecorder rec(r, callback);
   // path.branch_switch: the fundamental branch ends at its first bifurcation (the point past it,
   // on the fundamental branch, is not kept), the switched one where it meets another branch

@@ -143,6 +143,9 @@ struct PathControl {
   // nonlinearity a linear-kinematics twin of the case, solved by the fast path at each point's
   // depth). A calibration's force-travel runs read only the force and skip them.
   bool critical_points = true;
+  // Told of each failed continuation step as it happens (cont::Settings::on_step_failure; p is
+  // the depth in mm). Empty: none.
+  std::function<void(const cont::StepFailure&)> on_step_failure;
 };
 
 // The Newton settings of a continuation run's corrector, for solves at a fixed depth outside a

@@ -73,6 +73,18 @@ class Progress {
     else
       err_ << line << '\n';
   }
+  // A failed step on a line of its own: a path whose steps keep failing shows why.
+  void failed(const cont::StepFailure& f) {
+    char line[160];
+    std::snprintf(line, sizeof line, "depth %.4f mm: a step of %.3g failed, ", f.p, f.step);
+    std::string text = line;
+    if (f.retry > 0) {
+      std::snprintf(line, sizeof line, "retrying with %.3g: ", f.retry);
+      text += line;
+    }
+    text += f.reason;
+    err_ << (tty_ ? "\r\033[K" : "") << text << '\n' << std::flush;
+  }
   void done() {
     if (tty_) err_ << '\n';
   }
@@ -336,6 +348,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
     vtus.restore(record.value("vtu", nlohmann::json::array()));
     damage_rows = record.value("damage_points", std::string());
   };
+  control.on_step_failure = [&](const cont::StepFailure& f) { progress.failed(f); };
   PathResult r = run_indentation_path(setup, on_point, control);
   progress.done();
   // The path's files say why it stopped in the user's terms (the callback is how a signal

@@ -109,6 +109,35 @@ TEST(ContStepControl, UnevaluableResidualEndsWithStepTooSmallKeepingPoints) {
   }
 }
 
+// Each failed step is told as it happens, with the point it started from, its size, the retry
+// (half of it, 0 for the last one, of step_min) and the reason; a path without failures tells
+// nothing.
+TEST(ContStepControl, EachFailedStepIsToldWithItsRetryAndReason) {
+  LineProblem line;
+  line.evaluable_below = 0.5;
+  Settings s = line_settings();
+  s.step_min = 1e-6;
+  std::vector<StepFailure> told;
+  s.on_step_failure = [&](const StepFailure& f) { told.push_back(f); };
+  const Branch branch = pseudo_arclength(line, Vector::Zero(1), 0.0, s);
+  ASSERT_EQ(branch.status, Status::kStepTooSmall);
+  ASSERT_EQ(static_cast<int>(told.size()), branch.failed_steps);
+  for (std::size_t i = 0; i + 1 < told.size(); ++i) {
+    EXPECT_NEAR(told[i].retry, std::max(0.5 * told[i].step, s.step_min), 1e-15);
+    EXPECT_LT(told[i].p, 0.5);
+    EXPECT_NE(told[i].reason.find("cannot be evaluated"), std::string::npos) << told[i].reason;
+  }
+  EXPECT_EQ(told.back().retry, 0.0);
+  EXPECT_LE(told.back().step, s.step_min * (1.0 + 1e-12));
+  EXPECT_EQ(told.back().p, branch.points.back().p);
+
+  told.clear();
+  LineProblem clear;
+  const Branch whole = pseudo_arclength(clear, Vector::Zero(1), 0.0, s);
+  EXPECT_EQ(whole.failed_steps, 0);
+  EXPECT_TRUE(told.empty());
+}
+
 TEST(ContStepControl, CallbackStopsKeepingThePoint) {
   LineProblem line;
   const Branch branch =
