@@ -9,6 +9,9 @@ namespace {
 // |w dp/ds| of the unit tangent below which the branch is near a fold of p: no landing there (the
 // Jacobian at fixed p is nearly singular), Keller's step instead.
 constexpr double kFoldSlope = 1e-3;
+// How many steps ahead dp/ds must stay steep for a step to be corrected at fixed p
+// (ArclengthStepper::steep_ahead).
+constexpr double kFoldMargin = 4.0;
 
 }  // namespace
 
@@ -51,14 +54,41 @@ StepResult ArclengthStepper::step(const State& from, double ds) {
   Vector d_x;
   double d_p = 0.0;
   direction(from, d_x, d_p);
+  const double p_a = from.current.point.p;
   double target = 0.0;
-  if (landing_target(from.current.point.p, ds, d_p, target)) {
-    StepResult landed = land(from, d_x, d_p, target);
+  if (landing_target(p_a, ds, d_p, target)) {
+    StepResult landed = correct_at(from, d_x, d_p, target);
+    landed.landed = landed.converged;
     if (landed.converged) return landed;
+  } else if (steep_ahead(from, ds)) {
+    StepResult steep = correct_at(from, d_x, d_p, p_a + ds * d_p);
+    if (steep.converged) return steep;
   }
   // No target within reach, or no solution at it near the predictor (e.g. a fold just before
   // it): Keller's step; the tracer cuts it at a bound it crosses (Tracer::clip_to_target).
   return arclength_step(from, d_x, d_p, ds);
+}
+
+bool ArclengthStepper::steep_ahead(const State& from, double ds) const {
+  const double slope = settings_.natural_corrector_slope;
+  const Point& a = from.current.point;
+  const double w = bordered_.weight();
+  if (!(slope > 0.0) || !(w * std::abs(a.tangent_p) >= slope) || !from.has_previous ||
+      from.previous_x.size() != a.x.size())
+    return false;
+  const Vector dx = a.x - from.previous_x;
+  const double dp = a.p - from.previous_p;
+  const double chord = std::sqrt(bordered_.inner(dx, dp, dx, dp));
+  if (!(chord > 0.0)) return false;
+  // The chord's dp/ds is the tangent's at the middle of the last step. dp/ds, extrapolated
+  // linearly over kFoldMargin steps ahead, must stay above the slope: near a fold it falls
+  // faster than linearly (the roof's switched branch: 0.90, 0.75, then its fold 0.45 of
+  // arclength on, measured), and past a fold of p this branch has no solution at the
+  // predictor's p while another branch crossing the fold point may: the fixed-p corrector
+  // would jump to it.
+  const double rate = (a.tangent_p - dp / chord) / (0.5 * chord);
+  const double ahead = a.tangent_p + rate * kFoldMargin * ds;
+  return ahead * a.tangent_p > 0.0 && w * std::abs(ahead) >= slope;
 }
 
 bool ArclengthStepper::landing_target(double p_a, double ds, double d_p, double& target) const {
@@ -71,7 +101,8 @@ bool ArclengthStepper::landing_target(double p_a, double ds, double d_p, double&
   return std::isfinite(target) && ahead * (reach - target) >= 0.0;
 }
 
-StepResult ArclengthStepper::land(const State& from, const Vector& d_x, double d_p, double target) {
+StepResult ArclengthStepper::correct_at(const State& from, const Vector& d_x, double d_p,
+                                        double target) {
   const Point& a = from.current.point;
   const double ds = (target - a.p) / d_p;  // the predictor's arclength to p = target
   StepResult out;
@@ -86,7 +117,6 @@ StepResult ArclengthStepper::land(const State& from, const Vector& d_x, double d
   // The corrector at fixed p may leave the hyperplane's neighbourhood: accept only a point ahead
   // along d and not beyond twice the predictor's arclength (else a jump along the branch).
   out.converged = r.converged && out.sigma_end > 0.0 && out.sigma_end <= 2.0 * ds;
-  out.landed = out.converged;
   return out;
 }
 

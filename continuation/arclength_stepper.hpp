@@ -47,12 +47,17 @@ class ArclengthStepper final : public Stepper {
  private:
   // The unit tangent at the current point, or the unit secant from the previous point.
   void direction(const State& from, Vector& d_x, double& d_p) const;
+  // Whether the step of ds from the current point may be corrected at fixed p
+  // (Settings::natural_corrector_slope): the branch is steep in p there and, by the tangent and
+  // the chord from the previous point, stays so over the step (no fold of p within reach).
+  bool steep_ahead(const State& from, double ds) const;
   // The bound or parameter value that the predictor u_a + ds d reaches first, if it reaches one
   // (away from a fold: w |d_p| >= kFoldSlope); the landing is the step to it.
   bool landing_target(double p_a, double ds, double d_p, double& target) const;
-  // The step that lands on p = target: predictor u_a + (target - p_a) / d_p d, corrected at
-  // the fixed parameter target (natural corrector on the hyperplane p = target).
-  StepResult land(const State& from, const Vector& d_x, double d_p, double target);
+  // The step to p = target: predictor u_a + (target - p_a) / d_p d, corrected at the fixed
+  // parameter target (natural corrector on the hyperplane p = target). Used to land on a target
+  // and, where the branch is steep in p (Settings::natural_corrector_slope), for any step.
+  StepResult correct_at(const State& from, const Vector& d_x, double d_p, double target);
   // Keller's step of arclength ds along d.
   StepResult arclength_step(const State& from, const Vector& d_x, double d_p, double ds);
 

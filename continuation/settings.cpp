@@ -88,6 +88,8 @@ void Settings::validate() const {
           c + ".p_min = " + str(p_min) + " must be < p_max = " + str(p_max));
   require_field(max_steps >= 0, c, "max_steps", max_steps, "must be >= 0");
   require_positive(c, "parameter_weight", parameter_weight);
+  require_field(natural_corrector_slope >= 0.0 && natural_corrector_slope < 1.0, c,
+                "natural_corrector_slope", natural_corrector_slope, "must lie in [0, 1)");
   newton.validate(c + ".newton");
   require_field(newton.residual_scale > 0.0, c + ".newton", "residual_scale", newton.residual_scale,
                 "must be positive for continuation (a purely relative tolerance collapses "

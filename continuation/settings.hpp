@@ -73,6 +73,13 @@ struct StepFailure {
 struct Settings {
   Method method = Method::kPseudoArclength;
   Predictor predictor = Predictor::kTangent;
+  // pseudo_arclength's corrector where the branch is steep in p: a step whose unit tangent has
+  // |w dp/ds| >= natural_corrector_slope is corrected at the fixed p of its predictor, the local
+  // parameterisation of Rheinboldt & Burkardt (1983) with p as the local parameter. Each Newton
+  // iteration then solves with J alone, where Keller's bordered system needs J^-1 dF/dp as well
+  // (two solves). Near a fold (smaller slopes), or when the corrector at fixed p fails or leaves
+  // the step, Keller's step. 0 = always Keller's.
+  double natural_corrector_slope = 0.0;
   // Initial direction: the sign of dp along the first tangent (+1 or -1). Later steps are
   // oriented by the previous tangent, never by the previous parameter increment.
   int direction = 1;

@@ -15,8 +15,11 @@ class PaperCapEqualsCli(unittest.TestCase):
     """The built-in default (the source paper's cap, [0/0]2S, 0-10 mm) through the module and
     through `shellindent run`, one thread each. With a checkpoint file, as the CLI keeps one, it
     is the same computation: path.csv byte for byte. Without, the solver's caches are not
-    dropped every 10 points and the path differs in its last bits: equal to path.csv's 12 printed
-    digits within rtol 1e-10 (measured: 7e-12 at most, 2026-11-26)."""
+    dropped every 10 points and the path differs in its last bits. Each point's depth is its
+    predictor's (the fixed-depth corrector on steep steps, docs/theory/continuation.md 3), which
+    carries the tangent's Krylov accuracy, so those bits move the points along the same branch:
+    equal to path.csv within rtol 1e-8 (measured: 2.6e-9 at most, in `step`, 2026-11-30; 7e-12
+    with Keller's corrector alone)."""
 
     @classmethod
     def setUpClass(cls):
@@ -52,7 +55,7 @@ class PaperCapEqualsCli(unittest.TestCase):
                 np.testing.assert_allclose(self.plain[name], expected, rtol=0, atol=1e-9,
                                            err_msg=name)
                 continue
-            np.testing.assert_allclose(self.plain[name], expected, rtol=1e-10, atol=1e-300,
+            np.testing.assert_allclose(self.plain[name], expected, rtol=1e-8, atol=1e-300,
                                        err_msg=name)
 
     def test_units_are_the_column_table(self):

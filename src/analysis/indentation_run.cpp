@@ -265,6 +265,10 @@ cont::Settings continuation_settings(const IndentationSetup& s) {
   c.p_min = -path.depth_max;  // a snap-back may reduce the depth; never below minus the path
   c.max_steps = static_cast<int>(20 * path.depth_max / path.step) + 100;
   c.target_iterations = path.target_iterations;
+  // Away from a snap-back the depth is the branch's dominant coordinate (|dh/ds| of 0.97-0.99
+  // on the paper's cap): correcting at the predictor's depth needs one Krylov solve per Newton
+  // iteration instead of the bordered system's two (docs/performance.md, 2026-11-30).
+  c.natural_corrector_slope = 0.5;
   c.newton = path_newton_settings(s);
   c.extremum_monitors = {column_name(PathColumn::kForce)};
   c.slope_monitors = slope_monitor_names(run_columns(monitored_criteria(s.spec)));

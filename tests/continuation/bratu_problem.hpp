@@ -49,6 +49,7 @@ class BratuProblem final : public Problem {
   }
 
   bool solve(Vector& b) override {
+    ++solves_;
     const double off = 1.0 / (h_ * h_);
     for (int i = 1; i < n_; ++i) b(i) -= off / pivot_[i - 1] * b(i - 1);
     b(n_ - 1) /= pivot_[n_ - 1];
@@ -57,6 +58,7 @@ class BratuProblem final : public Problem {
   }
 
   int jacobian_sign() override { return sign_; }
+  int solves() const { return solves_; }  // linear solves with J so far
 
   double inner(const Vector& a, const Vector& b) const override { return h_ * a.dot(b); }
 
@@ -70,6 +72,7 @@ class BratuProblem final : public Problem {
   double h_;
   std::vector<double> pivot_;
   int sign_ = 0;
+  int solves_ = 0;
 };
 
 // The exact fold of the continuous problem. The solution is

@@ -14,8 +14,9 @@
 namespace si::cont {
 namespace {
 
-Settings circle_settings(Predictor predictor) {
+Settings circle_settings(Predictor predictor, double natural_corrector_slope = 0.0) {
   Settings s;
+  s.natural_corrector_slope = natural_corrector_slope;
   s.predictor = predictor;
   s.step_initial = 0.05;
   s.step_max = 0.2;
@@ -32,9 +33,9 @@ Callback stop_when_closed() {
   };
 }
 
-void expect_full_circle(Predictor predictor) {
+void expect_full_circle(Predictor predictor, double natural_corrector_slope = 0.0) {
   test::CircleProblem circle;
-  const Settings settings = circle_settings(predictor);
+  const Settings settings = circle_settings(predictor, natural_corrector_slope);
   const Branch branch =
       pseudo_arclength(circle, Vector::Constant(1, 1.0), 0.0, settings, stop_when_closed());
   ASSERT_EQ(branch.status, Status::kStoppedByCallback) << branch.reason;
@@ -48,7 +49,9 @@ void expect_full_circle(Predictor predictor) {
   EXPECT_TRUE(limits[0].located && limits[1].located);
   EXPECT_NEAR(limits[0].p, 1.0, settings.event_tolerance);
   EXPECT_NEAR(limits[1].p, -1.0, settings.event_tolerance);
-  const std::string label = predictor == Predictor::kTangent ? "tangent" : "secant";
+  const std::string label =
+      std::string(predictor == Predictor::kTangent ? "tangent" : "secant") +
+      (natural_corrector_slope > 0.0 ? ", natural corrector on steep steps" : "");
   si::test::record_verification_absolute("continuation-library",
                                          "circle, " + label + " predictor: limit point p = +1", 1.0,
                                          limits[0].p, settings.event_tolerance, "exact");
@@ -85,6 +88,12 @@ TEST(ContPseudoArclength, CircleTracedAllRoundSecantPredictor) {
   expect_full_circle(Predictor::kSecant);
 }
 
+// Steep steps corrected at fixed p (Settings::natural_corrector_slope): the circle is still
+// traced all round through both folds, where |dp/ds| -> 0 and Keller's step takes over.
+TEST(ContPseudoArclength, CircleTracedAllRoundWithNaturalCorrectorOnSteepSteps) {
+  expect_full_circle(Predictor::kTangent, 0.5);
+}
+
 TEST(ContPseudoArclength, DirectionMinusOneGoesDownFirst) {
   test::CircleProblem circle;
   Settings settings = circle_settings(Predictor::kTangent);
@@ -107,10 +116,11 @@ TEST(ContPseudoArclength, StopsExactlyAtParameterBound) {
   EXPECT_NEAR(branch.points.back().x(0), 0.8, 1e-10);
 }
 
-// The fold of the discrete Bratu problem on n interior nodes.
-Event bratu_fold(int n) {
+// The fold of the discrete Bratu problem on n interior nodes; `solves` counts the linear solves.
+Event bratu_fold(int n, double natural_corrector_slope = 0.0, int* solves = nullptr) {
   test::BratuProblem bratu(n);
   Settings settings;
+  settings.natural_corrector_slope = natural_corrector_slope;
   settings.step_initial = 0.1;
   settings.step_max = 0.5;
   settings.p_min = 0.5;  // stop on the upper branch on the way back
@@ -123,7 +133,26 @@ Event bratu_fold(int n) {
   const auto folds = test::events_of(branch, EventType::kLimitPoint);
   EXPECT_EQ(folds.size(), 1u);
   EXPECT_TRUE(!folds.empty() && folds[0].located);
+  for (const Point& pt : branch.points) {  // every point on the branch, whichever corrector
+    Vector F;
+    bratu.residual(pt.x, pt.p, F);
+    EXPECT_LE(F.lpNorm<Eigen::Infinity>(), 1e-10 * 10.0) << "p = " << pt.p;
+  }
+  if (solves) *solves = bratu.solves();
   return folds.empty() ? Event{} : folds[0];
+}
+
+// The same fold with the steep steps corrected at fixed p: located at the same lambda (both to
+// the event tolerance, 1e-8 in arclength, second order in lambda at a fold), with fewer linear
+// solves (one per Newton iteration on the steep steps instead of the bordered two).
+TEST(ContPseudoArclength, NaturalCorrectorOnSteepStepsFindsTheSameFoldWithFewerSolves) {
+  int keller = 0, local = 0;
+  const double l_keller = bratu_fold(200, 0.0, &keller).p;
+  const double l_local = bratu_fold(200, 0.5, &local).p;
+  EXPECT_NEAR(l_local, l_keller, 1e-10);
+  EXPECT_LT(local, 0.85 * keller) << local << " solves against " << keller;
+  std::printf("Bratu fold n = 200: %d solves (Keller), %d (natural corrector on steep steps)\n",
+              keller, local);
 }
 
 // Bratu fold: lambda_c = 3.513830719 (Boyd 1986; Mohsen 2014), acceptance 1e-4. The scheme is

@@ -58,6 +58,15 @@ TEST(ContSettings, RejectsBadBoundsAndCounts) {
   expect_rejected([](Settings& s) { s.checkpoint_interval = 5; }, "needs a checkpoint_path");
 }
 
+TEST(ContSettings, RejectsNaturalCorrectorSlopeOutsideZeroToOne) {
+  expect_rejected([](Settings& s) { s.natural_corrector_slope = 1.0; },
+                  "continuation.natural_corrector_slope = 1");
+  expect_rejected([](Settings& s) { s.natural_corrector_slope = -0.5; },
+                  "continuation.natural_corrector_slope = -0.5");
+  expect_rejected([](Settings& s) { s.natural_corrector_slope = std::nan(""); },
+                  "continuation.natural_corrector_slope = nan");
+}
+
 TEST(ContSettings, RejectsBadStabilityAndFeatureSettings) {
   expect_rejected([](Settings& s) { s.stability_modes = -1; },
                   "continuation.stability_modes = -1 must be >= 0");
