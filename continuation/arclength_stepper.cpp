@@ -73,20 +73,15 @@ bool ArclengthStepper::steep_ahead(const State& from, double ds) const {
   const double slope = settings_.natural_corrector_slope;
   const Point& a = from.current.point;
   const double w = bordered_.weight();
-  if (!(slope > 0.0) || !(w * std::abs(a.tangent_p) >= slope) || !from.has_previous ||
-      from.previous_x.size() != a.x.size())
+  if (!(slope > 0.0) || !(w * std::abs(a.tangent_p) >= slope) ||
+      !std::isfinite(from.previous_tangent_p) || !(a.step > 0.0))
     return false;
-  const Vector dx = a.x - from.previous_x;
-  const double dp = a.p - from.previous_p;
-  const double chord = std::sqrt(bordered_.inner(dx, dp, dx, dp));
-  if (!(chord > 0.0)) return false;
-  // The chord's dp/ds is the tangent's at the middle of the last step. dp/ds, extrapolated
-  // linearly over kFoldMargin steps ahead, must stay above the slope: near a fold it falls
-  // faster than linearly (the roof's switched branch: 0.90, 0.75, then its fold 0.45 of
-  // arclength on, measured), and past a fold of p this branch has no solution at the
-  // predictor's p while another branch crossing the fold point may: the fixed-p corrector
-  // would jump to it.
-  const double rate = (a.tangent_p - dp / chord) / (0.5 * chord);
+  // dp/ds, extrapolated linearly from the last step's change over kFoldMargin steps ahead, must
+  // stay above the slope: near a fold it falls faster than linearly (the roof's switched
+  // branch: 0.90, 0.75, then its fold 0.45 of arclength on, measured), and past a fold of p
+  // this branch has no solution at the predictor's p while another branch crossing the fold
+  // point may: the fixed-p corrector would jump to it.
+  const double rate = (a.tangent_p - from.previous_tangent_p) / a.step;
   const double ahead = a.tangent_p + rate * kFoldMargin * ds;
   return ahead * a.tangent_p > 0.0 && w * std::abs(ahead) >= slope;
 }

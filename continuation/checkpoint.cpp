@@ -210,7 +210,8 @@ json state_json(const State& s) {
           {"step", number(s.step)},
           {"has_previous", s.has_previous},
           {"previous_x", vector(s.previous_x)},
-          {"previous_p", number(s.previous_p)}};
+          {"previous_p", number(s.previous_p)},
+          {"previous_tangent_p", number(s.previous_tangent_p)}};
 }
 
 State to_state(const json& j) {
@@ -221,6 +222,8 @@ State to_state(const json& j) {
   s.has_previous = j.at("has_previous").get<bool>();
   s.previous_x = to_vector(j.at("previous_x"));
   s.previous_p = to_double(j.at("previous_p"));
+  // Absent from checkpoints written before 2026-11-30: no previous slope, Keller's next step.
+  s.previous_tangent_p = to_double(j.value("previous_tangent_p", json("nan")));
   return s;
 }
 

@@ -253,6 +253,7 @@ class Tracer {
     state_.has_previous = true;
     state_.previous_x = a.point.x;
     state_.previous_p = a.point.p;
+    state_.previous_tangent_p = a.point.tangent_p;
     state_.current = b;
     // Step adaptation by the Newton iteration count (Allgower & Georg 2003, §6.1, in spirit).
     const double factor =

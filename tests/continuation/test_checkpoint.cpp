@@ -86,10 +86,11 @@ void expect_same_branch(const Branch& a, const Branch& b, double tol, std::size_
 
 // The run is "killed" after step 13: the callback copies the checkpoint on disk at that moment
 // (written at step 10) and stops. Resuming from the copy must give the uninterrupted branch.
-void expect_resume_reproduces(Method method, bool keeps_x) {
+void expect_resume_reproduces(Method method, bool keeps_x, double natural_corrector_slope = 0.0) {
   const int n = 100;
   test::BratuProblem bratu(n);
-  const Settings plain = bratu_settings(method);
+  Settings plain = bratu_settings(method);
+  plain.natural_corrector_slope = natural_corrector_slope;
   const Branch reference = run_fresh(method, bratu, plain);
   ASSERT_GT(reference.points.size(), 15u);  // so that the kill at step 13 interrupts it
 
@@ -122,6 +123,12 @@ void expect_resume_reproduces(Method method, bool keeps_x) {
 
 TEST(ContCheckpoint, ResumePseudoArclengthReproducesUninterruptedRun) {
   expect_resume_reproduces(Method::kPseudoArclength, true);
+}
+
+// With steep steps corrected at fixed p the step after the resume reads the previous point's
+// dp/ds (State::previous_tangent_p), which the checkpoint keeps.
+TEST(ContCheckpoint, ResumeWithNaturalCorrectorOnSteepStepsReproducesUninterruptedRun) {
+  expect_resume_reproduces(Method::kPseudoArclength, true, 0.5);
 }
 
 TEST(ContCheckpoint, ResumeNaturalReproducesUninterruptedRun) {
@@ -222,6 +229,7 @@ TEST(ContCheckpoint, JsonRoundTripIsExact) {
   c.state.has_previous = true;
   c.state.previous_x = pt.x * 0.7;
   c.state.previous_p = 2.0 / 3.0;
+  c.state.previous_tangent_p = -1.0 / 3.0;
 
   const std::string path = temp_path("roundtrip.json");
   RecordingWriter files;
@@ -244,6 +252,7 @@ TEST(ContCheckpoint, JsonRoundTripIsExact) {
   EXPECT_EQ(r.state.current.tangent_x(1), -std::numeric_limits<double>::infinity());
   EXPECT_EQ(r.state.step, c.state.step);
   EXPECT_TRUE((r.state.previous_x.array() == c.state.previous_x.array()).all());
+  EXPECT_EQ(r.state.previous_tangent_p, c.state.previous_tangent_p);
   ASSERT_EQ(r.branch.events.size(), 1u);
   EXPECT_EQ(r.branch.events[0].type, EventType::kInflection);
   EXPECT_EQ(r.branch.events[0].against, "b");
