@@ -17,6 +17,7 @@ class ArclengthSystem final : public NonlinearSystem {
   bool residual(const Vector& u, Vector& r) override;
   bool setup(const Vector& u) override;
   bool solve(Vector& b) override;
+  std::string failure() const override { return problem_.failure(); }
 
  private:
   Problem& problem_;
@@ -48,8 +49,8 @@ class ArclengthStepper final : public Stepper {
   // The unit tangent at the current point, or the unit secant from the previous point.
   void direction(const State& from, Vector& d_x, double& d_p) const;
   // Whether the step of ds from the current point may be corrected at fixed p
-  // (Settings::natural_corrector_slope): the branch is steep in p there and, by the tangent and
-  // the chord from the previous point, stays so over the step (no fold of p within reach).
+  // (Settings::natural_corrector_slope): the branch is steep in p there and, by the change of
+  // dp/ds since the previous point, stays so over the step (no fold of p within reach).
   bool steep_ahead(const State& from, double ds) const;
   // The bound or parameter value that the predictor u_a + ds d reaches first, if it reaches one
   // (away from a fold: w |d_p| >= kFoldSlope); the landing is the step to it.

@@ -60,6 +60,12 @@ struct Adapter {
   std::string messages;
   Vector scratch;
 
+  // The system's own reason for a failed call, ahead of KINSOL's generic ones.
+  void note(const char* what) {
+    const std::string why = system.failure();
+    messages += std::string(what) + (why.empty() ? "" : ": " + why) + "; ";
+  }
+
   int residual(N_Vector u, N_Vector f) {
     Vector r;
     if (!system.residual(view(u), r)) return 1;
@@ -69,11 +75,16 @@ struct Adapter {
   }
   int setup(N_Vector u, N_Vector fu) {
     norms.push_back(inf_norm(view(fu)));
-    return system.setup(view(u)) ? 0 : 1;
+    if (system.setup(view(u))) return 0;
+    note("the Jacobian's set-up failed");
+    return 1;
   }
   int solve(N_Vector x, N_Vector b) {
     scratch = view(b);
-    if (!system.solve(scratch) || !scratch.allFinite()) return SUNLS_PACKAGE_FAIL_REC;
+    if (!system.solve(scratch) || !scratch.allFinite()) {
+      note("the linear solve failed");
+      return SUNLS_PACKAGE_FAIL_REC;
+    }
     Eigen::Map<Vector>(N_VGetArrayPointer(x), scratch.size()) = scratch;
     return SUNLS_SUCCESS;
   }
@@ -177,6 +188,7 @@ class FixedParameter final : public NonlinearSystem {
   bool residual(const Vector& u, Vector& r) override { return problem_.residual(u, p_, r); }
   bool setup(const Vector& u) override { return problem_.factorize(u, p_); }
   bool solve(Vector& b) override { return problem_.solve(b); }
+  std::string failure() const override { return problem_.failure(); }
 
  private:
   Problem& problem_;

@@ -22,6 +22,8 @@ class NonlinearSystem {
   virtual bool setup(const Vector& u) = 0;
   // (dR/du) y = b in place, with the last setup().
   virtual bool solve(Vector& b) = 0;
+  // Why the last call that returned false failed (Problem::failure); empty if not known.
+  virtual std::string failure() const { return {}; }
 };
 
 struct NewtonResult {

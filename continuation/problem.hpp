@@ -30,6 +30,11 @@ class Problem {
   // convergence on F itself, and the tangents and events tolerate errors far above roundoff.
   virtual bool solve(Vector& b) = 0;
 
+  // Why the last residual(), factorize() or solve() that returned false failed, in the
+  // problem's words (e.g. which factorization and why); empty if not known. The corrector adds
+  // it to its failure reason.
+  virtual std::string failure() const { return {}; }
+
   // dF/dp at (x, p); default: central finite difference of residual() with the relative step
   // h = eps^(1/3) max(1, |p|), which balances the O(h^2) truncation against O(eps/h) roundoff.
   virtual bool residual_p(const Vector& x, double p, Vector& out);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 #include "core/error.hpp"
@@ -146,10 +147,15 @@ bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& 
     cholesky_->factorize(H_);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
+    refresh_failure_ = e.what();
     return false;
   }
   coupled_.clear();
-  if (!coupled_.build(coupling_, num_shell_, condensed, *cholesky_)) return false;
+  if (!coupled_.build(coupling_, num_shell_, condensed, *cholesky_)) {
+    refresh_failure_ = "the coupled rows' Woodbury correction is singular";
+    return false;
+  }
+  refresh_failure_.clear();
   pre_rows_ = condensed;
   pre_rotations_ = rotations_;
   has_preconditioner_ = true;
@@ -199,7 +205,16 @@ SparseMatrix ContactJacobianSolver::chart_gradients(const std::vector<int>& rows
 
 void ContactJacobianSolver::factor_fallback() {
   ++counters_.lu_fallbacks;
-  lu_.factorize(*J_, num_shell_, coupling_);  // throws a numerical error if singular
+  try {
+    lu_.factorize(*J_, num_shell_, coupling_);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::kNumerical) throw;
+    // Both routes' reasons: why the preconditioner could not be used, and why the LU failed.
+    const std::string before =
+        refresh_failure_.empty() ? "" : "the preconditioner's factor: " + refresh_failure_ + "; ";
+    throw_numerical(before + "the LU of the contact Jacobian (" + std::to_string(J_->rows()) +
+                    " unknowns): " + e.what());
+  }
   use_lu_ = true;
 }
 
@@ -343,6 +358,10 @@ Eigen::VectorXd ContactJacobianSolver::solve(const Eigen::VectorXd& rhs) {
     counters_.krylov_products += r.iterations;
     last_products_ = r.iterations;
     if (r.converged && x.allFinite()) return x;
+    char why[96];
+    std::snprintf(why, sizeof why, "GMRES stopped after %d products at relative residual %.3g",
+                  r.iterations, r.relative_residual);
+    refresh_failure_ = why;
     if (preconditioner_age_ == 0 || !refresh_preconditioner()) break;
     if (border_ && !prepare_border()) break;
   }

@@ -132,6 +132,9 @@ class ContactJacobianSolver {
   int last_products_ = 0;       // GMRES products of the last solve
   GmresSettings gmres_;
   ContactJacobianCounters counters_;
+  // Why the last refresh of the preconditioner's factor failed (empty: it did not), for the
+  // fallback LU's error if that fails too.
+  std::string refresh_failure_;
 };
 
 }  // namespace si

@@ -132,6 +132,7 @@ bool IndentationProblem::residual(const cont::Vector& z, double h, cont::Vector&
     states = &shell_terms(z, h, r);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
+    failure_ = e.what();
     return false;
   }
   F.resize(size());
@@ -151,6 +152,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
     states = &shell_terms(z, h, r_free);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
+    failure_ = e.what();
     return false;
   }
   const SparseMatrix& K = shell_.tangent(z.head(nf));
@@ -175,6 +177,7 @@ bool IndentationProblem::factorize(const cont::Vector& z, double h) {
     solver_->factorize(jacobian_, nf, rotations, rows, border_, std::move(coupling));
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
+    failure_ = e.what();
     return false;
   }
   factored_.reset(new FactoredPoint{z, h, rotations});

@@ -81,6 +81,8 @@ class IndentationProblem : public cont::Problem {
   // terms' Newton guesses, the evaluate() cache): a resumed run, which starts without them, then
   // goes on bit for bit as the uninterrupted one.
   void reset_solver_caches() override;
+  // The numerical error behind the last residual() or factorize() that returned false.
+  std::string failure() const override { return failure_; }
   // The gradients of the strongly active contact constraints with respect to the shell's free
   // dofs (one row per active constraint; spatial increments, before the chart transform), for
   // the tangent restricted to them; `multiplier_index` (if given) gets each row's multiplier in z.
@@ -198,6 +200,7 @@ class IndentationProblem : public cont::Problem {
   };
   std::unique_ptr<FactoredPoint> factored_;
   IndentationCounters counters_;
+  std::string failure_;  // failure()
   // evaluate() at the last (z, h): the continuation's monitors and the output read the same point.
   cont::Vector cached_z_;
   double cached_h_ = 0;

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "continuation/kinsol_corrector.hpp"
 #include "dense_test_problems.hpp"
@@ -102,6 +103,45 @@ TEST(ContKinsolCorrector, UnevaluableResidualIsAFailureNotAThrow) {
   result = solve_at(problem, y, 0.0, tight_settings());
   EXPECT_FALSE(result.converged);
   EXPECT_EQ(result.reason, "the residual cannot be evaluated at the starting point");
+}
+
+// A factorization that fails says why: the problem's own reason (Problem::failure) reaches the
+// corrector's, ahead of KINSOL's generic "the Jacobian routine failed".
+class UnfactorableAbove final : public test::DenseProblem {
+ public:
+  int size() const override { return 1; }
+  bool residual(const Vector& x, double, Vector& F) override {
+    F = Vector::Constant(1, x(0) * x(0) - 4.0);
+    return true;
+  }
+  test::Matrix jacobian(const Vector& x, double) const override {
+    return test::Matrix::Constant(1, 1, 2.0 * x(0));
+  }
+  bool factorize(const Vector& x, double p) override {
+    if (x(0) > 1.5) return test::DenseProblem::factorize(x, p);
+    failed_at_ = x(0);
+    return false;
+  }
+  std::string failure() const override {
+    return "the test's factor refused x = " + std::to_string(failed_at_);
+  }
+
+ private:
+  double failed_at_ = 0.0;
+};
+
+TEST(ContKinsolCorrector, FailedFactorizationReasonReachesTheResult) {
+  UnfactorableAbove problem;
+  Vector x{{1.0}};
+  const NewtonResult result = solve_at(problem, x, 0.0, tight_settings());
+  EXPECT_FALSE(result.converged);
+  EXPECT_NE(result.reason.find("the Jacobian's set-up failed: the test's factor refused x = 1.0"),
+            std::string::npos)
+      << result.reason;
+  Vector y{{3.0}};  // factorable all the way to the root x = 2: no failure, no reason
+  const NewtonResult fine = solve_at(problem, y, 0.0, tight_settings());
+  EXPECT_TRUE(fine.converged) << fine.reason;
+  EXPECT_TRUE(fine.reason.empty());
 }
 
 TEST(ContKinsolCorrector, SizeMismatchThrows) {
