@@ -2,23 +2,27 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <vector>
 
 namespace si {
 
 int edit_distance(const std::string& a, const std::string& b) {
-  // One row of the dynamic-programming table at a time.
-  std::vector<int> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = static_cast<int>(j);
+  // Three rows of the dynamic-programming table: the transposition looks two rows back.
+  const size_t m = b.size();
+  std::vector<int> before(m + 1), last(m + 1), row(m + 1);
+  for (size_t j = 0; j <= m; ++j) last[j] = static_cast<int>(j);
   for (size_t i = 1; i <= a.size(); ++i) {
-    int diagonal = row[0];
     row[0] = static_cast<int>(i);
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const int substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
-      diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
+    for (size_t j = 1; j <= m; ++j) {
+      const int substitute = last[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      row[j] = std::min({last[j] + 1, row[j - 1] + 1, substitute});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        row[j] = std::min(row[j], before[j - 2] + 1);
     }
+    before.swap(last);
+    last.swap(row);
   }
-  return row[b.size()];
+  return last[m];
 }
 
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates) {

@@ -6,7 +6,9 @@
 
 namespace si {
 
-// Levenshtein distance (insertions, deletions, substitutions), case-sensitive.
+// Edit distance counting insertions, deletions, substitutions and swaps of two adjacent letters
+// (the optimal string alignment distance, Damerau's typo classes), case-sensitive: "stpe" is one
+// edit from "step", the commonest slip of the fingers (Damerau 1964, Commun. ACM 7, 171-176).
 int edit_distance(const std::string& a, const std::string& b);
 
 // " (did you mean 'x'?)" for the closest candidate when it is close enough to be a likely typo

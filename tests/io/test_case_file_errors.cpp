@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "core/did_you_mean.hpp"
 #include "core/error.hpp"
 #include "io/case_file.hpp"
 #include "material/material_library.hpp"
@@ -88,6 +89,18 @@ TEST(CaseFileErrors, LocalSupportWithoutTheAnisotropicLaw) {
 TEST(CaseFileErrors, UnknownTopLevelKeySuggestsTheClosest) {
   expect_error(kHead + "meshh: {element: mitc4}\n",
                {"meshh", "{element: mitc4}", 3, "unknown key 'meshh' (did you mean 'mesh'?)"});
+}
+
+// Two adjacent letters swapped is one typo (edit_distance counts the swap once).
+TEST(CaseFileErrors, SwappedLettersSuggestTheKey) {
+  expect_error(kHead + "path: {depth_max: 2 mm, stpe: 0.1 mm}\n",
+               {"path.stpe", "0.1 mm", 3, "unknown key 'stpe' (did you mean 'step'?)"});
+  EXPECT_EQ(edit_distance("stpe", "step"), 1);
+  EXPECT_EQ(edit_distance("ca", "abc"), 3);  // a swap is not combined with later insertions
+  EXPECT_EQ(edit_distance("kitten", "sitting"), 3);
+  EXPECT_EQ(edit_distance("", "abc"), 3);
+  EXPECT_EQ(did_you_mean("stpe", {"method", "step"}), " (did you mean 'step'?)");
+  EXPECT_EQ(did_you_mean("xyz", {"method", "step"}), "");  // nothing close: no suggestion
 }
 
 TEST(CaseFileErrors, UnknownTopLevelKeyListsTheAllowedOnes) {
