@@ -326,6 +326,33 @@ TEST(ContactJacobianSolver, IndefiniteShellBlockFallsBackToLu) {
   EXPECT_EQ(solver.counters().lu_fallbacks, 1);
 }
 
+// A singular J (a shell stiffness of rank one, dense so that J keeps its pattern) fails both
+// routes, and the error says so for each: why the preconditioner's Cholesky failed and why the
+// LU did (the 1e6 path's stall printed only "the Jacobian routine failed").
+TEST(ContactJacobianSolver, SingularJacobianNamesBothFailedFactorizations) {
+  Synthetic s = make_synthetic(-1.0);
+  const Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(kShell, 1.0, 2.0);
+  s.K = v * v.transpose();
+  s.D.setZero();
+  const SparseMatrix J = s.jacobian();
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
+  try {
+    solver.factorize(J, kShell, s.rotations, s.rows);
+    ADD_FAILURE() << "a singular Jacobian was factored";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.kind(), ErrorKind::kNumerical);
+    const std::size_t cholesky = what.find("the preconditioner's factor: ");
+    const std::size_t lu =
+        what.find("the LU of the contact Jacobian (" + std::to_string(J.rows()) + " unknowns): ");
+    ASSERT_NE(cholesky, std::string::npos) << what;
+    ASSERT_NE(lu, std::string::npos) << what;
+    EXPECT_LT(cholesky, lu) << what;
+    EXPECT_NE(what.find("CHOLMOD: not positive definite"), std::string::npos) << what;
+    EXPECT_NE(what.find("UMFPACK", lu), std::string::npos) << what;
+  }
+}
+
 // The LU that takes over factors J with the coupled rows' block (RowCoupling::added_to): the
 // solution is still that of the coupled matrix.
 // Couplings over fewer rows (a zone that changed while J's pattern did not) get an LU analysed
