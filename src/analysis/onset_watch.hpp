@@ -21,7 +21,8 @@ class OnsetWatch {
   // T_lin(h), N: the twin's force at depth h (mm), by the linear fast path.
   double linear_force(double h);
 
-  // Feeds a converged point of the run and its state z.
+  // Feeds a converged point of the run and its state z. The watch keeps a bracket only from the
+  // path's start (index 0) on: fed a later point first (a resumed run), it keeps none.
   void add(const PathPoint& p, const cont::Vector& z);
 
   // The run's force at depth h inside the bracket that starts at depth `from`, solved by
@@ -37,6 +38,7 @@ class OnsetWatch {
   std::optional<std::pair<double, double>> bracket() const;
   int trial_solves() const { return solves_; }          // corrector runs so far (tests, benchmarks)
   int trial_iterations() const { return iterations_; }  // their Newton iterations
+  int linear_solves() const { return linear_solves_; }  // linear_force() calls so far
 
  private:
   struct Solved {
@@ -57,6 +59,7 @@ class OnsetWatch {
   std::vector<Solved> solved_;  // the bracket's ends, then the trials
   int solves_ = 0;
   int iterations_ = 0;
+  int linear_solves_ = 0;
 };
 
 }  // namespace si

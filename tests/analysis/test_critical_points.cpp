@@ -347,6 +347,36 @@ TEST(OnsetWatch, TrialSolvesReuseSolvedStatesAndAgreeWithNaturalSolves) {
   EXPECT_NEAR(t, force_at("nonlinear", near), 1e-8 * std::abs(t));
 }
 
+// A resumed run feeds the watch from its checkpoint's point on: the passage's start and any
+// bracket are behind it, so the watch keeps none and solves no linear twin (at the resumed depth
+// that costs a solve per contact node: over ten minutes on the 1e6-unknown cap). Fed the same
+// points from the start, it brackets the onset.
+TEST(OnsetWatch, ResumedRunKeepsNoBracketAndSolvesNoTwin) {
+  IndentationSetup s(small_cap("nonlinear", 3.0), 1);
+  std::vector<std::pair<PathPoint, cont::Vector>> fed;
+  PathControl control;
+  control.critical_points = false;
+  const PathResult r = run_indentation_path(
+      s,
+      [&](const PathPoint& p, const cont::Vector& z) {
+        fed.emplace_back(p, z);
+        return true;
+      },
+      control);
+  ASSERT_TRUE(r.completed) << r.reason;
+  ASSERT_GT(fed.size(), 4u);
+  const std::shared_ptr<OnsetWatch> whole = watch_onset(s);
+  for (const auto& [p, z] : fed) whole->add(p, z);
+  ASSERT_TRUE(whole->bracket().has_value());
+  EXPECT_GT(whole->linear_solves(), 0);
+  const std::size_t resumed_at = fed.size() / 2;
+  ASSERT_GT(fed[resumed_at].first.index, 0);
+  const std::shared_ptr<OnsetWatch> resumed = watch_onset(s);
+  for (std::size_t i = resumed_at; i < fed.size(); ++i) resumed->add(fed[i].first, fed[i].second);
+  EXPECT_FALSE(resumed->bracket().has_value());
+  EXPECT_EQ(resumed->linear_solves(), 0);
+}
+
 // A run the user stopped (Ctrl-C) reports the onset from its points, without the re-solves that
 // locate it to 1e-9 mm (each costs a step: minutes on a 1e6-unknown cap); the full run's located
 // onset lies within the stopped run's stated accuracy.
