@@ -1,9 +1,6 @@
 #include "app/run_command.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +13,7 @@
 #include "analysis/mode_field.hpp"
 #include "app/interrupt_signals.hpp"
 #include "app/path_vtus.hpp"
+#include "app/progress_line.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
@@ -50,51 +48,6 @@ std::string table_row(const PathPoint& p, bool local) {
                 s.force, s.apex_deflection, part, s.contact_radius, s.energy, p.work, p.iterations);
   return line;
 }
-
-// One progress line per point; on a terminal it overwrites itself.
-class Progress {
- public:
-  Progress(std::ostream& err, double depth_max) : err_(err), depth_max_(depth_max) {}
-  void show(const PathPoint& p) {
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double d = p.state.depth;
-    char eta[32] = "";
-    if (d > 0 && d < depth_max_)
-      std::snprintf(eta, sizeof eta, ", ETA %.0f s", elapsed * (depth_max_ - d) / d);
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "depth %.4f / %.4g mm, force %.6g N, %d nodes in contact, step %.3g, %d "
-                  "iterations, %.1f s%s",
-                  d, depth_max_, p.state.force, p.state.contact_nodes, p.step, p.iterations,
-                  elapsed, eta);
-    if (tty_)
-      err_ << '\r' << line << "\033[K" << std::flush;
-    else
-      err_ << line << '\n';
-  }
-  // A failed step on a line of its own: a path whose steps keep failing shows why.
-  void failed(const cont::StepFailure& f) {
-    char line[160];
-    std::snprintf(line, sizeof line, "depth %.4f mm: a step of %.3g failed, ", f.p, f.step);
-    std::string text = line;
-    if (f.retry > 0) {
-      std::snprintf(line, sizeof line, "retrying with %.3g: ", f.retry);
-      text += line;
-    }
-    text += f.reason;
-    err_ << (tty_ ? "\r\033[K" : "") << text << '\n' << std::flush;
-  }
-  void done() {
-    if (tty_) err_ << '\n';
-  }
-
- private:
-  std::ostream& err_;
-  double depth_max_;
-  bool tty_ = isatty(STDERR_FILENO) != 0;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 std::string case_text(const std::string& path) {
   std::ifstream in(path);
@@ -253,7 +206,7 @@ void print_error_summary(const PathResult& r, double tolerance, std::ostream& ou
 // run's own case as its set-up resolved it (the refined zone the companion must share).
 void add_force_errors(const IndentationCase& run, int threads, PathResult& r, std::ostream& err) {
   if (run.mesh.error_estimate != ErrorEstimate::kCompanion || interrupted()) return;
-  std::optional<Progress> progress;
+  std::optional<ProgressLine> progress;
   const CompanionRun c = run_companion(
       run, r, threads,
       [&](const CompanionRun& built) {
@@ -328,7 +281,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
 
   const OutputChoice formats = output_choice(cf.output);
   const CaseDigest digest = case_digest(text);
-  Progress progress(err, cf.path.depth_max);
+  ProgressLine progress(err, cf.path.depth_max);
   PathVtus vtus(dir, cf.output, setup, formats.vtu);
   std::string damage_rows;  // damage_points.csv's rows so far (saved with the checkpoints)
   InterruptGuard guard;
