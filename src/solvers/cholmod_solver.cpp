@@ -12,6 +12,13 @@ namespace si {
 struct CholmodSolver::Impl : Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
   Impl() { this->cholmod().print = 0; }  // we report failures ourselves
   double rcond() { return cholmod_rcond(this->m_cholmodFactor, &this->cholmod()); }
+  // The matrix's column whose pivot failed: L->minor is in the fill-reducing order (the first
+  // column of its supernode), L->Perm maps it back. -1 if the factor does not say.
+  long failed_column() const {
+    const cholmod_factor* L = this->m_cholmodFactor;
+    if (L == nullptr || L->Perm == nullptr || L->minor >= L->n) return -1;
+    return static_cast<const int*>(L->Perm)[L->minor];
+  }
   bool analyzed = false;
 };
 
@@ -48,10 +55,27 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
   impl_->factorize(A);
   if (impl_->info() != Eigen::Success) {
     rcond_ = 0;
-    throw_numerical(singular_matrix_message("CHOLMOD: not positive definite", rcond_));
+    throw_numerical(failure_message(A));
   }
   rcond_ = impl_->rcond();
   if (!(rcond_ >= kSingularRcond)) throw_numerical(singular_matrix_message("CHOLMOD", rcond_));
+}
+
+// Why the factorization failed, from CHOLMOD's status: a pivot that is not positive (with its
+// column, which names the node whose dof it is) or a lack of memory (a 1e6-unknown shell's factor
+// is gigabytes), which no change of the model would cure and which must not read as one.
+std::string CholmodSolver::failure_message(const SparseMatrix& A) const {
+  const int status = impl_->cholmod().status;
+  const std::string size =
+      std::to_string(A.rows()) + " unknowns, " + std::to_string(A.nonZeros()) + " nonzeros";
+  if (status == CHOLMOD_OUT_OF_MEMORY || status == CHOLMOD_TOO_LARGE)
+    return "CHOLMOD: out of memory for the factor of a matrix of " + size;
+  if (status == CHOLMOD_NOT_POSDEF)
+    return singular_matrix_message("CHOLMOD: not positive definite, at column " +
+                                       std::to_string(impl_->failed_column()) + " of " +
+                                       std::to_string(A.rows()) + " (or one factored with it)",
+                                   0.0);
+  return "CHOLMOD: the factorization failed (status " + std::to_string(status) + ", " + size + ")";
 }
 
 Eigen::VectorXd CholmodSolver::solve(const Eigen::VectorXd& b) const {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "solvers/linear_solver.hpp"
 
@@ -25,6 +26,7 @@ class CholmodSolver : public LinearSolver {
 
  private:
   struct Impl;  // keeps cholmod.h out of this header
+  std::string failure_message(const SparseMatrix& A) const;
   std::unique_ptr<Impl> impl_;
   double rcond_ = 0;
 };

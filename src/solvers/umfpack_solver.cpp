@@ -9,6 +9,9 @@ namespace si {
 // Eigen's wrapper does not expose UMFPACK's Info array, which holds the rcond estimate.
 struct UmfpackSolver::Impl : Eigen::UmfPackLU<SparseMatrix> {
   double rcond() const { return this->m_umfpackInfo[UMFPACK_RCOND]; }
+  // UMFPACK's status of the last symbolic or numeric factorization (UMFPACK_OK, a warning > 0,
+  // an error < 0).
+  int status() const { return static_cast<int>(this->m_umfpackInfo[UMFPACK_STATUS]); }
   bool analyzed = false;
 };
 
@@ -17,6 +20,19 @@ struct UmfpackSolver::Impl : Eigen::UmfPackLU<SparseMatrix> {
 // conditioned linear solve whose residual is checked by the caller.
 // METIS ordering: 80 ms instead of 87 ms (AMD) per factorization of the paper cap's contact
 // Jacobian at 1e4 unknowns (docs/performance.md).
+namespace {
+
+// UMFPACK's error, said: a lack of memory (the LU of a 1e6-unknown shell needs more than the
+// Cholesky factor it stands in for) is not a singular model.
+std::string status_text(int status, const SparseMatrix& A) {
+  const std::string size =
+      std::to_string(A.rows()) + " unknowns, " + std::to_string(A.nonZeros()) + " nonzeros";
+  if (status == UMFPACK_ERROR_out_of_memory) return ": out of memory (" + size + ")";
+  return " (UMFPACK status " + std::to_string(status) + ", " + size + ")";
+}
+
+}  // namespace
+
 UmfpackSolver::UmfpackSolver() : impl_(std::make_unique<Impl>()) {
   impl_->umfpackControl()[UMFPACK_IRSTEP] = 0;
   impl_->umfpackControl()[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
@@ -25,7 +41,8 @@ UmfpackSolver::~UmfpackSolver() = default;
 
 void UmfpackSolver::analyze(const SparseMatrix& A) {
   impl_->analyzePattern(A);
-  if (impl_->info() != Eigen::Success) throw_numerical("UMFPACK symbolic analysis failed");
+  if (impl_->info() != Eigen::Success)
+    throw_numerical("UMFPACK symbolic analysis failed" + status_text(impl_->status(), A));
   impl_->analyzed = true;
 }
 
@@ -33,7 +50,9 @@ void UmfpackSolver::factorize(const SparseMatrix& A) {
   if (!impl_->analyzed) analyze(A);
   impl_->factorize(A);
   rcond_ = impl_->rcond();
-  // UMFPACK_WARNING_singular_matrix makes Eigen report NumericalIssue.
+  // UMFPACK_WARNING_singular_matrix makes Eigen report NumericalIssue; so does an error.
+  const int status = impl_->status();
+  if (status < 0) throw_numerical("UMFPACK: the factorization failed" + status_text(status, A));
   if (impl_->info() != Eigen::Success || !(rcond_ >= kSingularRcond))
     throw_numerical(singular_matrix_message("UMFPACK", rcond_));
 }

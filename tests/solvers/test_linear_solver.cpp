@@ -66,6 +66,33 @@ TEST(LinearSolver, SingularFreeBodyIsReportedClearly) {
   }
 }
 
+// Why a factorization failed is said as it is: CHOLMOD names the column of a pivot that is not
+// positive (in the matrix's own numbering, not its fill-reducing order), which points at the
+// node; a free body still reads as one.
+TEST(LinearSolver, CholmodNamesTheColumnThatIsNotPositiveDefinite) {
+  const int n = 10, bad = 7;
+  std::vector<Eigen::Triplet<double>> t;
+  // An arrow: column 0 couples all others, so the fill-reducing order moves it last and the
+  // failed pivot's position in that order is not its column.
+  for (int i = 0; i < n; ++i) t.emplace_back(i, i, i == bad ? -1.0 : 2.0 + i);
+  for (int i = 1; i < n; ++i) {
+    t.emplace_back(0, i, 0.01);
+    t.emplace_back(i, 0, 0.01);
+  }
+  SparseMatrix A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  auto solver = make_linear_solver(LinearSolverKind::kCholmod);
+  try {
+    solver->factorize(A);
+    ADD_FAILURE() << "an indefinite matrix was factored";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::kNumerical);
+    EXPECT_NE(std::string(e.what()).find("not positive definite, at column 7 of 10"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // Only CHOLMOD needs (and reads only the lower triangle of) a symmetric positive-definite matrix;
 // the messages name each solver.
 TEST(LinearSolver, KindsBuildTheirSolvers) {
