@@ -1,6 +1,7 @@
 #include "indentation/contact_jacobian_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -20,12 +21,24 @@ constexpr double kCondensationFloor = 1e-8;
 // until a solve needs more than this, or it is older than kMaxPreconditionerAge linearisations.
 constexpr int kRefreshProducts = 3;
 constexpr int kMaxPreconditionerAge = 20;
+// Where H is not positive definite and the LU is out of reach, the factor of H + sigma |diag| (the
+// shell block's diagonal) for the first of these that is (Nocedal & Wright 2006, Algorithm 3.3,
+// the multiple of the identity scaled by the diagonal): GMRES still solves J itself, and pays in
+// products for the eigenvalues of H below sigma |H_ii|, so the smallest shift that factors is
+// taken. Why: past 9.63 mm the 1e6-unknown cap's H was not positive definite and UMFPACK ran out
+// of memory on its LU (docs/performance.md).
+constexpr std::array<double, 3> kShifts = {1e-6, 1e-4, 1e-2};
 
 }  // namespace
 
 ContactJacobianSolver::ContactJacobianSolver(double kappa, LinearSolverKind fallback,
                                              double relative_tolerance)
-    : kappa_(kappa), lu_(fallback) {
+    : ContactJacobianSolver(
+          kappa, [fallback] { return make_linear_solver(fallback); }, relative_tolerance) {}
+
+ContactJacobianSolver::ContactJacobianSolver(double kappa, LinearSolverFactory fallback,
+                                             double relative_tolerance)
+    : kappa_(kappa), lu_(std::move(fallback)) {
   SI_REQUIRE(relative_tolerance > 0 && relative_tolerance < 1,
              "contact Jacobian: the Krylov tolerance must lie in (0, 1)");
   gmres_.relative_tolerance = relative_tolerance;
@@ -50,6 +63,8 @@ void ContactJacobianSolver::analyze_shell(const SparseMatrix& J, int num_shell) 
   for (int c = 0; c < num_shell; ++c)
     for (int k = H_.outerIndexPtr()[c]; k < H_.outerIndexPtr()[c + 1]; ++k)
       mirror_[k] = shell_slot(c, H_.innerIndexPtr()[k]);  // shell patterns are symmetric
+  diagonal_slot_.resize(num_shell);
+  for (int c = 0; c < num_shell; ++c) diagonal_slot_[c] = shell_slot(c, c);
   cholesky_ = make_linear_solver(LinearSolverKind::kCholmod);
   cholesky_->analyze(H_);
   rotation_slots_.clear();
@@ -92,10 +107,45 @@ void ContactJacobianSolver::transpose_transform(
 // H = sym(T^T A) + condensed rows from the current linearisation; false if H is not positive
 // definite.
 bool ContactJacobianSolver::refresh_preconditioner() {
-  return refresh_with(rows_);
+  return refresh_with(rows_, lu_out_of_memory_);
 }
 
-bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& condensed) {
+bool ContactJacobianSolver::factor_h() {
+  try {
+    ++counters_.cholesky;
+    cholesky_->factorize(H_);
+    return true;
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::kNumerical) throw;
+    refresh_failure_ = e.what();
+    return false;
+  }
+}
+
+bool ContactJacobianSolver::factor_shell_block(const std::vector<double>& shell_diagonal) {
+  if (factor_h()) return true;
+  if (shell_diagonal.empty()) return false;
+  const std::string unshifted = refresh_failure_;
+  double* hv = H_.valuePtr();
+  std::vector<double> diagonal(diagonal_slot_.size());
+  for (std::size_t c = 0; c < diagonal.size(); ++c) diagonal[c] = hv[diagonal_slot_[c]];
+  for (const double sigma : kShifts) {
+    for (std::size_t c = 0; c < diagonal.size(); ++c)
+      hv[diagonal_slot_[c]] = diagonal[c] + sigma * std::abs(shell_diagonal[c]);
+    if (factor_h()) {
+      ++counters_.shifted;
+      return true;
+    }
+  }
+  char why[96];
+  std::snprintf(why, sizeof why, "; shifted by up to %g |diag|, still not factored",
+                kShifts.back());
+  refresh_failure_ = unshifted + why;
+  return false;
+}
+
+bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& condensed,
+                                         bool shift) {
   if (rotation_slots_.empty())
     for (std::size_t i = 0; i < rotations_.size(); ++i) {
       const ShellChart::RotationBlock& r = rotations_[i];
@@ -132,6 +182,13 @@ bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& 
   }
   double* hv = H_.valuePtr();
   for (int k = 0; k < H_.nonZeros(); ++k) hv[k] = 0.5 * (m[k] + m[mirror_[k]]);
+  // The shift's scale: the shell's own diagonal. The condensed rows' penalties (kappa / 1e-8 on a
+  // fully active row) would make a shift of 1e-6 of theirs hundreds of times the shell's
+  // stiffness, and GMRES pays for that (measured on the synthetic Jacobian of the tests: 60
+  // products without converging).
+  std::vector<double> shell_diagonal;
+  if (shift)
+    for (int slot : diagonal_slot_) shell_diagonal.push_back(hv[slot]);
   for (std::size_t i = 0; i < condensed.size(); ++i) {
     const ContactJacobianRow& row = condensed[i];
     if (row.b == 0.0) continue;
@@ -142,14 +199,7 @@ bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& 
           hv[row_slots_[i][5 * r + c]] += w * row.gradient[r] * row.gradient[c];
   }
   has_preconditioner_ = false;
-  try {
-    ++counters_.cholesky;
-    cholesky_->factorize(H_);
-  } catch (const Error& e) {
-    if (e.kind() != ErrorKind::kNumerical) throw;
-    refresh_failure_ = e.what();
-    return false;
-  }
+  if (!factor_shell_block(shell_diagonal)) return false;
   coupled_.clear();
   if (!coupled_.build(coupling_, num_shell_, condensed, *cholesky_)) {
     refresh_failure_ = "the coupled rows' Woodbury correction is singular";
@@ -178,9 +228,9 @@ bool ContactJacobianSolver::refresh_penalized(const std::vector<int>& rows) {
         rows_[static_cast<std::size_t>(i)].b > 0.0 ? rows_[static_cast<std::size_t>(i)].b : kappa_;
     row.a = kCondensationFloor * row.b / kappa_;
   }
-  if (refresh_with(condensed)) return true;
+  if (refresh_with(condensed, false)) return true;  // the stability analysis needs H itself
   // What factorize() would have done at this linearisation.
-  if (!refresh_preconditioner()) factor_fallback();
+  if (!refresh_preconditioner()) factor_fallback(true);
   return false;
 }
 
@@ -203,17 +253,31 @@ SparseMatrix ContactJacobianSolver::chart_gradients(const std::vector<int>& rows
   return G;
 }
 
-void ContactJacobianSolver::factor_fallback() {
+void ContactJacobianSolver::factor_fallback(bool may_shift) {
+  // Both routes' reasons in one message: why the preconditioner could not be used, and why the
+  // LU failed.
+  const auto fail = [this](const std::string& lu_failure) {
+    const std::string before =
+        refresh_failure_.empty() ? "" : "the preconditioner's factor: " + refresh_failure_ + "; ";
+    throw_numerical(before + "the LU of the contact Jacobian (" + std::to_string(J_->rows()) +
+                    " unknowns): " + lu_failure);
+  };
+  if (lu_out_of_memory_) fail("out of memory before, not tried again");
   ++counters_.lu_fallbacks;
   try {
     lu_.factorize(*J_, num_shell_, coupling_);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
-    // Both routes' reasons: why the preconditioner could not be used, and why the LU failed.
-    const std::string before =
-        refresh_failure_.empty() ? "" : "the preconditioner's factor: " + refresh_failure_ + "; ";
-    throw_numerical(before + "the LU of the contact Jacobian (" + std::to_string(J_->rows()) +
-                    " unknowns): " + e.what());
+    // Out of memory (the LU of a 1e6-unknown shell needs more than its Cholesky factor): from
+    // now on a shifted H preconditions GMRES where H itself has no Cholesky factor, and no LU is
+    // tried. Near a singular J an LU's solves are the more accurate (measured on the roof's
+    // fold: its force 1.45e-6 off the bifurcation's with the shifted H, 2.6e-7 with the LU), so
+    // the shift is kept for where the LU is out of reach.
+    if (lu_.out_of_memory()) {
+      lu_out_of_memory_ = true;
+      if (may_shift && refresh_with(rows_, true) && (!border_ || prepare_border())) return;
+    }
+    fail(e.what());
   }
   use_lu_ = true;
 }
@@ -264,10 +328,10 @@ void ContactJacobianSolver::factorize(const SparseMatrix& J, int num_shell,
   const bool stale = !has_preconditioner_ || last_products_ > kRefreshProducts ||
                      preconditioner_age_ > kMaxPreconditionerAge;
   if (stale && !refresh_preconditioner()) {
-    factor_fallback();
+    factor_fallback(true);
     return;
   }
-  if (border_ && !prepare_border()) factor_fallback();
+  if (border_ && !prepare_border()) factor_fallback(false);
 }
 
 bool ContactJacobianSolver::prepare_border() {
@@ -365,7 +429,7 @@ Eigen::VectorXd ContactJacobianSolver::solve(const Eigen::VectorXd& rhs) {
     if (preconditioner_age_ == 0 || !refresh_preconditioner()) break;
     if (border_ && !prepare_border()) break;
   }
-  if (!use_lu_) factor_fallback();
+  if (!use_lu_) factor_fallback(false);
   return lu_.solve(rhs);
 }
 

@@ -11,7 +11,9 @@
 // the difference. Why: CHOLMOD's supernodal Cholesky of the shell block is about twice as fast as
 // UMFPACK's LU of J, its solves three times (docs/performance.md), and its pattern never changes
 // with the candidate set. Where H is not positive definite (past a limit point) or GMRES does not
-// converge, the solve falls back to an LU of J (the `fallback` solver, UMFPACK by default).
+// converge, the solve falls back to an LU of J (the `fallback` solver, UMFPACK by default). Where
+// that LU runs out of memory (a million unknowns), the preconditioner is made from H shifted by
+// a small multiple of its diagonal instead, and no LU is tried again.
 // Candidates appended to the set (same shell block) keep the factor: their rows enter the
 // preconditioner uncondensed until the next refresh.
 // Rows that couple each other (Da not diagonal: the elastic face's compliance over its zone,
@@ -40,7 +42,8 @@
 namespace si {
 
 struct ContactJacobianCounters {
-  long cholesky = 0;         // factorizations of H
+  long cholesky = 0;         // factorizations of H (each shift tried counts)
+  long shifted = 0;          // preconditioners made from a shifted H (not positive definite)
   long lu_fallbacks = 0;     // factorizations of J by the fallback LU
   long krylov_solves = 0;    // GMRES solves
   long krylov_products = 0;  // products with J in them
@@ -51,6 +54,9 @@ class ContactJacobianSolver {
   // kappa: the problem's stiffness scale (N/mm). fallback: an LU solver (linear_solver.hpp).
   // relative_tolerance: GMRES stops at ||J y - b|| <= relative_tolerance ||b|| (in (0, 1)).
   ContactJacobianSolver(double kappa, LinearSolverKind fallback, double relative_tolerance = 1e-12);
+  // The same with the fallback LU made by `fallback` (tests give one that fails as they need).
+  ContactJacobianSolver(double kappa, LinearSolverFactory fallback,
+                        double relative_tolerance = 1e-12);
   ~ContactJacobianSolver();
 
   // J: the Jacobian (num_shell shell rows/columns first, then one row/column per row of
@@ -90,14 +96,23 @@ class ContactJacobianSolver {
   bool refresh_preconditioner();
   // H = sym(T^T A) + sum_i (b_i / a_i) G~_i G~_i^T over `condensed` (the current rows with their
   // weights), factored; kept with its rows on success.
-  bool refresh_with(const std::vector<ContactJacobianRow>& condensed);
+  // `shift`: where H is not positive definite, a shifted H may make the preconditioner
+  // (factor_shell_block).
+  bool refresh_with(const std::vector<ContactJacobianRow>& condensed, bool shift);
+  // Cholesky of H_ as it is; false (refresh_failure_ says why) if it fails.
+  bool factor_h();
+  // H_'s factor, or (shell_diagonal not empty) that of H_ + sigma |diag(shell block)| for the
+  // first sigma of kShifts that factors.
+  bool factor_shell_block(const std::vector<double>& shell_diagonal);
   void apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
   // P^-1 on the shell and contact rows (in and out without the border).
   void apply_condensed(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
   // The border's c, d, e from J, and P^-1 c and the pivot e - d^T P^-1 c with the current P;
   // false if the pivot vanishes.
   bool prepare_border();
-  void factor_fallback();
+  // The LU of J; where it runs out of memory and `may_shift`, the preconditioner of a shifted H
+  // instead (and for the rest of the solver's life, before any LU). Throws if neither.
+  void factor_fallback(bool may_shift);
   // T^T v on the rotation pairs of v's first num_shell entries (in place).
   static void transpose_transform(const std::vector<ShellChart::RotationBlock>& rotations,
                                   Eigen::VectorXd& v);
@@ -109,13 +124,15 @@ class ContactJacobianSolver {
   // Shell block of J: pattern, the slot of each entry's transpose, its slots in J.
   SparseMatrix H_;
   std::vector<int> mirror_;
+  std::vector<int> diagonal_slot_;  // slot of each diagonal entry of H_
   std::vector<int> j_slot_;
   std::vector<int> analyzed_outer_;             // J's column starts when j_slot_ was made
   std::vector<RotationSlots> rotation_slots_;   // per (rotation block, column of its rows)
   std::vector<std::array<int, 25>> row_slots_;  // per contact row: its 5x5 block in H_
   std::unique_ptr<LinearSolver> cholesky_;
-  CoupledLu lu_;         // the fallback, with the rows' couplings
-  bool use_lu_ = false;  // this factorize() went to the fallback LU
+  CoupledLu lu_;                   // the fallback, with the rows' couplings
+  bool use_lu_ = false;            // this factorize() went to the fallback LU
+  bool lu_out_of_memory_ = false;  // the LU ran out of memory once: shifted H before it
   int border_ = 0;
   Eigen::VectorXd border_column_, border_row_, border_solution_;  // c, d, P^-1 c
   double border_corner_ = 0, border_pivot_ = 0;                   // e, e - d^T P^-1 c

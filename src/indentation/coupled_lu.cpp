@@ -5,7 +5,7 @@ namespace si {
 void CoupledLu::factorize(const SparseMatrix& J, int first, const RowCoupling& coupling) {
   if (lu_ && coupling.members != members_) lu_.reset();
   if (!lu_) {
-    lu_ = make_linear_solver(kind_);  // analyses the pattern on its first factorization
+    lu_ = make_();  // analyses the pattern on its first factorization
     members_ = coupling.members;
   }
   if (coupling.empty()) {

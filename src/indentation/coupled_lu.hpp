@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "core/sparse.hpp"
@@ -16,7 +17,8 @@ namespace si {
 
 class CoupledLu {
  public:
-  explicit CoupledLu(LinearSolverKind kind) : kind_(kind) {}
+  explicit CoupledLu(LinearSolverKind kind) : make_([kind] { return make_linear_solver(kind); }) {}
+  explicit CoupledLu(LinearSolverFactory make) : make_(std::move(make)) {}
   // The next factorize() analyses anew (J's pattern changed, or a new solver's solves are
   // wanted bit for bit: UMFPACK's analysis reads the values it was made from).
   void forget() { lu_.reset(); }
@@ -24,9 +26,11 @@ class CoupledLu {
   void factorize(const SparseMatrix& J, int first, const RowCoupling& coupling);
   // After factorize().
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const { return lu_->solve(rhs); }
+  // The last factorize() failed for lack of memory (LinearSolver::out_of_memory).
+  bool out_of_memory() const { return lu_ && lu_->out_of_memory(); }
 
  private:
-  LinearSolverKind kind_;
+  LinearSolverFactory make_;
   std::unique_ptr<LinearSolver> lu_;
   std::vector<int> members_;  // the couplings' rows lu_'s analysis was made with
   SparseMatrix coupled_;      // J with the couplings

@@ -53,6 +53,8 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
   if (!impl_->analyzed) analyze(A);
   const SerialOpenMpRegion serial;
   impl_->factorize(A);
+  const int status = impl_->cholmod().status;
+  out_of_memory_ = status == CHOLMOD_OUT_OF_MEMORY || status == CHOLMOD_TOO_LARGE;
   if (impl_->info() != Eigen::Success) {
     rcond_ = 0;
     throw_numerical(failure_message(A));

@@ -23,12 +23,14 @@ class CholmodSolver : public LinearSolver {
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const override;
   Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) const override;
   double rcond() const override { return rcond_; }
+  bool out_of_memory() const override { return out_of_memory_; }
 
  private:
   struct Impl;  // keeps cholmod.h out of this header
   std::string failure_message(const SparseMatrix& A) const;
   std::unique_ptr<Impl> impl_;
   double rcond_ = 0;
+  bool out_of_memory_ = false;
 };
 
 }  // namespace si

@@ -5,6 +5,7 @@
 // (pivot ratio) below kSingularRcond, since roundoff often hides an exact singularity.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -36,9 +37,15 @@ class LinearSolver {
   virtual Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) const;
   // Reciprocal condition estimate of the last factorization (ratio of extreme pivots).
   virtual double rcond() const = 0;
+  // The last analyze() or factorize() failed for lack of memory, not for the matrix: a caller
+  // choosing between routes need not try this one again at the same size.
+  virtual bool out_of_memory() const { return false; }
 };
 
 std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind);
+
+// Makes a solver: where a caller needs fresh ones of a kind it is given (e.g. a fallback LU).
+using LinearSolverFactory = std::function<std::unique_ptr<LinearSolver>()>;
 
 // The message every solver uses when the matrix turns out singular.
 std::string singular_matrix_message(const std::string& solver, double rcond);

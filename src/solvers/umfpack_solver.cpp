@@ -41,6 +41,7 @@ UmfpackSolver::~UmfpackSolver() = default;
 
 void UmfpackSolver::analyze(const SparseMatrix& A) {
   impl_->analyzePattern(A);
+  out_of_memory_ = impl_->status() == UMFPACK_ERROR_out_of_memory;
   if (impl_->info() != Eigen::Success)
     throw_numerical("UMFPACK symbolic analysis failed" + status_text(impl_->status(), A));
   impl_->analyzed = true;
@@ -52,6 +53,7 @@ void UmfpackSolver::factorize(const SparseMatrix& A) {
   rcond_ = impl_->rcond();
   // UMFPACK_WARNING_singular_matrix makes Eigen report NumericalIssue; so does an error.
   const int status = impl_->status();
+  out_of_memory_ = status == UMFPACK_ERROR_out_of_memory;
   if (status < 0) throw_numerical("UMFPACK: the factorization failed" + status_text(status, A));
   if (impl_->info() != Eigen::Success || !(rcond_ >= kSingularRcond))
     throw_numerical(singular_matrix_message("UMFPACK", rcond_));

@@ -19,11 +19,13 @@ class UmfpackSolver : public LinearSolver {
   void factorize(const SparseMatrix& A) override;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const override;
   double rcond() const override { return rcond_; }
+  bool out_of_memory() const override { return out_of_memory_; }
 
  private:
   struct Impl;  // keeps umfpack.h out of this header
   std::unique_ptr<Impl> impl_;
   double rcond_ = 0;
+  bool out_of_memory_ = false;
 };
 
 }  // namespace si

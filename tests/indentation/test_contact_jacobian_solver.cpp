@@ -316,6 +316,105 @@ TEST(ContactJacobianSolver, ManyCoupledRowsAreLeftToGmres) {
   }
 }
 
+// A fallback LU that always runs out of memory, as UMFPACK did on the 1e6-unknown cap.
+class OutOfMemoryLu : public LinearSolver {
+ public:
+  LinearSolverKind kind() const override { return LinearSolverKind::kUmfpack; }
+  std::string name() const override { return "out-of-memory LU"; }
+  bool needs_spd() const override { return false; }
+  void analyze(const SparseMatrix&) override {}
+  void factorize(const SparseMatrix&) override { throw_numerical("out of memory (the test's LU)"); }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const override {
+    ADD_FAILURE() << "solved with an LU that was never factored";
+    return b;
+  }
+  double rcond() const override { return 0; }
+  bool out_of_memory() const override { return true; }
+};
+
+// make_synthetic's shell block made slightly indefinite along the free eqs 9-11 (no contact row
+// reads them, so the condensed rows cannot make H definite there): K projected off w, plus an
+// eigenvalue of -1e-3 max|diag| along w. w is then an eigenvector of H too (T is the identity on
+// eqs 9-11), the only negative one; diagonal shifts of 1e-6 and 1e-4 |diag| are too small for
+// it, 1e-2 is not. (Much nearer 0, J's condition puts GMRES's 1e-12 out of double precision.)
+Synthetic slightly_indefinite() {
+  Synthetic s = make_synthetic();
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(kShell);
+  w.tail(3).setOnes();
+  w.normalize();
+  const Eigen::MatrixXd P = Eigen::MatrixXd::Identity(kShell, kShell) - w * w.transpose();
+  const double mu = -1e-3 * s.K.diagonal().cwiseAbs().maxCoeff();
+  s.K = P * s.K * P + mu * w * w.transpose();
+  return s;
+}
+
+// Where H has no Cholesky factor the LU comes first: near a singular J its solves are the
+// more accurate. No shift is tried.
+TEST(ContactJacobianSolver, SlightlyIndefiniteShellBlockGoesToTheLuFirst) {
+  const Synthetic s = slightly_indefinite();
+  const SparseMatrix J = s.jacobian();
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
+  solver.factorize(J, kShell, s.rotations, s.rows);
+  expect_matches_dense_lu(solver, J);
+  EXPECT_EQ(solver.counters().lu_fallbacks, 1);
+  EXPECT_EQ(solver.counters().shifted, 0);
+  EXPECT_EQ(solver.counters().cholesky, 1);
+}
+
+// Where the LU runs out of memory, the factor of H with the smallest diagonal shift that makes
+// it definite preconditions GMRES on J itself, solved to the dense LU's answer; from then on no
+// LU is tried (it cost minutes per attempt at 1e6 unknowns). A definite H takes no shift.
+TEST(ContactJacobianSolver, LuOutOfMemoryGivesWayToAShiftedPreconditioner) {
+  const Synthetic s = slightly_indefinite();
+  const SparseMatrix J = s.jacobian();
+  ContactJacobianSolver solver(kKappa, [] { return std::make_unique<OutOfMemoryLu>(); });
+  solver.factorize(J, kShell, s.rotations, s.rows);
+  expect_matches_dense_lu(solver, J);
+  EXPECT_EQ(solver.counters().lu_fallbacks, 1);
+  EXPECT_EQ(solver.counters().shifted, 1);
+  // H, then H, 1e-6, 1e-4 and 1e-2 after the LU's failure.
+  EXPECT_EQ(solver.counters().cholesky, 5);
+  solver.forget_preconditioner();
+  solver.factorize(J, kShell, s.rotations, s.rows);
+  expect_matches_dense_lu(solver, J);
+  EXPECT_EQ(solver.counters().lu_fallbacks, 1);  // not tried again
+  EXPECT_EQ(solver.counters().shifted, 2);
+  const Synthetic definite = make_synthetic();
+  const SparseMatrix Jd = definite.jacobian();
+  solver.forget_preconditioner();
+  solver.factorize(Jd, kShell, definite.rotations, definite.rows);
+  expect_matches_dense_lu(solver, Jd);
+  EXPECT_EQ(solver.counters().shifted, 2);
+}
+
+// No shift up to 1e-2 |diag| makes a negative definite block definite: with the LU out of memory
+// as well, the error names the Cholesky's failure, the shifts' and the LU's.
+TEST(ContactJacobianSolver, NoShiftAndNoLuSaysBoth) {
+  const Synthetic s = make_synthetic(-1.0);
+  const SparseMatrix J = s.jacobian();
+  ContactJacobianSolver solver(kKappa, [] { return std::make_unique<OutOfMemoryLu>(); });
+  try {
+    solver.factorize(J, kShell, s.rotations, s.rows);
+    ADD_FAILURE() << "factored without a factor";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.kind(), ErrorKind::kNumerical);
+    EXPECT_NE(what.find("CHOLMOD: not positive definite, at column "), std::string::npos) << what;
+    EXPECT_NE(what.find("shifted by up to 0.01 |diag|, still not factored"), std::string::npos)
+        << what;
+    EXPECT_NE(what.find("out of memory (the test's LU)"), std::string::npos) << what;
+  }
+  try {
+    solver.factorize(J, kShell, s.rotations, s.rows);
+    ADD_FAILURE() << "factored without a factor";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("out of memory before, not tried again"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(solver.counters().lu_fallbacks, 1);
+}
+
 // An indefinite shell block (past a limit point) has no Cholesky factor: the LU takes over.
 TEST(ContactJacobianSolver, IndefiniteShellBlockFallsBackToLu) {
   const Synthetic s = make_synthetic(-1.0);
@@ -324,6 +423,7 @@ TEST(ContactJacobianSolver, IndefiniteShellBlockFallsBackToLu) {
   solver.factorize(J, kShell, s.rotations, s.rows);
   expect_matches_dense_lu(solver, J);
   EXPECT_EQ(solver.counters().lu_fallbacks, 1);
+  EXPECT_EQ(solver.counters().shifted, 0);
 }
 
 // A singular J (a shell stiffness of rank one, dense so that J keeps its pattern) fails both
