@@ -159,16 +159,28 @@ void expect_matches_dense_lu(ContactJacobianSolver& solver, const SparseMatrix& 
   EXPECT_LT((x - reference).norm(), 1e-10 * reference.norm());
 }
 
+// J (with its couplings) factored by `solver` and solved to the dense LU's answer (the solver
+// keeps a pointer to J: J lives until the solve is done).
+void factor_and_check(ContactJacobianSolver& solver, const Synthetic& s) {
+  const SparseMatrix J = s.jacobian();
+  solver.factorize(J, kShell, s.rotations, s.rows, 0, s.coupling());
+  expect_matches_dense_lu(solver, s.full());
+}
+
+// The same by a fresh solver with UMFPACK as its fallback; the solver's counters.
+ContactJacobianCounters solved_once(const Synthetic& s) {
+  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
+  factor_and_check(solver, s);
+  return solver.counters();
+}
+
 // One factor, no LU, and the dense LU's solution in at most two GMRES products: the
 // preconditioner is exact up to the condensation floor.
 void expect_exact_preconditioner(const Synthetic& s) {
-  const SparseMatrix J = s.jacobian();
-  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
-  solver.factorize(J, kShell, s.rotations, s.rows, 0, s.coupling());
-  expect_matches_dense_lu(solver, s.full());
-  EXPECT_EQ(solver.counters().cholesky, 1);
-  EXPECT_EQ(solver.counters().lu_fallbacks, 0);
-  EXPECT_LE(solver.counters().krylov_products, 2);
+  const ContactJacobianCounters c = solved_once(s);
+  EXPECT_EQ(c.cholesky, 1);
+  EXPECT_EQ(c.lu_fallbacks, 0);
+  EXPECT_LE(c.krylov_products, 2);
 }
 
 // T^T (K T) is symmetric: the preconditioner is exact up to the condensation floor.
@@ -348,17 +360,17 @@ Synthetic slightly_indefinite() {
   return s;
 }
 
-// Where H has no Cholesky factor the LU comes first: near a singular J its solves are the
-// more accurate. No shift is tried.
+// Where H has no Cholesky factor the LU takes over, before any shift: near a singular J its
+// solves are the more accurate.
+void expect_lu_without_shift(const Synthetic& s) {
+  const ContactJacobianCounters c = solved_once(s);
+  EXPECT_EQ(c.lu_fallbacks, 1);
+  EXPECT_EQ(c.shifted, 0);
+  EXPECT_EQ(c.cholesky, 1);
+}
+
 TEST(ContactJacobianSolver, SlightlyIndefiniteShellBlockGoesToTheLuFirst) {
-  const Synthetic s = slightly_indefinite();
-  const SparseMatrix J = s.jacobian();
-  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
-  solver.factorize(J, kShell, s.rotations, s.rows);
-  expect_matches_dense_lu(solver, J);
-  EXPECT_EQ(solver.counters().lu_fallbacks, 1);
-  EXPECT_EQ(solver.counters().shifted, 0);
-  EXPECT_EQ(solver.counters().cholesky, 1);
+  expect_lu_without_shift(slightly_indefinite());
 }
 
 // Where the LU runs out of memory, the factor of H with the smallest diagonal shift that makes
@@ -366,24 +378,18 @@ TEST(ContactJacobianSolver, SlightlyIndefiniteShellBlockGoesToTheLuFirst) {
 // LU is tried (it cost minutes per attempt at 1e6 unknowns). A definite H takes no shift.
 TEST(ContactJacobianSolver, LuOutOfMemoryGivesWayToAShiftedPreconditioner) {
   const Synthetic s = slightly_indefinite();
-  const SparseMatrix J = s.jacobian();
   ContactJacobianSolver solver(kKappa, [] { return std::make_unique<OutOfMemoryLu>(); });
-  solver.factorize(J, kShell, s.rotations, s.rows);
-  expect_matches_dense_lu(solver, J);
+  factor_and_check(solver, s);
   EXPECT_EQ(solver.counters().lu_fallbacks, 1);
   EXPECT_EQ(solver.counters().shifted, 1);
   // H, then H, 1e-6, 1e-4 and 1e-2 after the LU's failure.
   EXPECT_EQ(solver.counters().cholesky, 5);
   solver.forget_preconditioner();
-  solver.factorize(J, kShell, s.rotations, s.rows);
-  expect_matches_dense_lu(solver, J);
+  factor_and_check(solver, s);
   EXPECT_EQ(solver.counters().lu_fallbacks, 1);  // not tried again
   EXPECT_EQ(solver.counters().shifted, 2);
-  const Synthetic definite = make_synthetic();
-  const SparseMatrix Jd = definite.jacobian();
   solver.forget_preconditioner();
-  solver.factorize(Jd, kShell, definite.rotations, definite.rows);
-  expect_matches_dense_lu(solver, Jd);
+  factor_and_check(solver, make_synthetic());
   EXPECT_EQ(solver.counters().shifted, 2);
 }
 
@@ -417,13 +423,7 @@ TEST(ContactJacobianSolver, NoShiftAndNoLuSaysBoth) {
 
 // An indefinite shell block (past a limit point) has no Cholesky factor: the LU takes over.
 TEST(ContactJacobianSolver, IndefiniteShellBlockFallsBackToLu) {
-  const Synthetic s = make_synthetic(-1.0);
-  const SparseMatrix J = s.jacobian();
-  ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
-  solver.factorize(J, kShell, s.rotations, s.rows);
-  expect_matches_dense_lu(solver, J);
-  EXPECT_EQ(solver.counters().lu_fallbacks, 1);
-  EXPECT_EQ(solver.counters().shifted, 0);
+  expect_lu_without_shift(make_synthetic(-1.0));
 }
 
 // A singular J (a shell stiffness of rank one, dense so that J keeps its pattern) fails both
