@@ -107,7 +107,7 @@ void ContactJacobianSolver::transpose_transform(
 // H = sym(T^T A) + condensed rows from the current linearisation; false if H is not positive
 // definite.
 bool ContactJacobianSolver::refresh_preconditioner() {
-  return refresh_with(rows_, lu_out_of_memory_);
+  return refresh_with(rows_, lu_out_of_memory_ ? Shift::kIfNeeded : Shift::kNone);
 }
 
 bool ContactJacobianSolver::factor_h() {
@@ -122,9 +122,10 @@ bool ContactJacobianSolver::factor_h() {
   }
 }
 
-bool ContactJacobianSolver::factor_shell_block(const std::vector<double>& shell_diagonal) {
-  if (factor_h()) return true;
-  if (shell_diagonal.empty()) return false;
+bool ContactJacobianSolver::factor_shell_block(Shift shift,
+                                               const std::vector<double>& shell_diagonal) {
+  if (shift != Shift::kOnly && factor_h()) return true;
+  if (shift == Shift::kNone) return false;
   const std::string unshifted = refresh_failure_;
   double* hv = H_.valuePtr();
   std::vector<double> diagonal(diagonal_slot_.size());
@@ -145,7 +146,7 @@ bool ContactJacobianSolver::factor_shell_block(const std::vector<double>& shell_
 }
 
 bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& condensed,
-                                         bool shift) {
+                                         Shift shift) {
   if (rotation_slots_.empty())
     for (std::size_t i = 0; i < rotations_.size(); ++i) {
       const ShellChart::RotationBlock& r = rotations_[i];
@@ -187,7 +188,7 @@ bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& 
   // stiffness, and GMRES pays for that (measured on the synthetic Jacobian of the tests: 60
   // products without converging).
   std::vector<double> shell_diagonal;
-  if (shift)
+  if (shift != Shift::kNone)
     for (int slot : diagonal_slot_) shell_diagonal.push_back(hv[slot]);
   for (std::size_t i = 0; i < condensed.size(); ++i) {
     const ContactJacobianRow& row = condensed[i];
@@ -199,7 +200,7 @@ bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& 
           hv[row_slots_[i][5 * r + c]] += w * row.gradient[r] * row.gradient[c];
   }
   has_preconditioner_ = false;
-  if (!factor_shell_block(shell_diagonal)) return false;
+  if (!factor_shell_block(shift, shell_diagonal)) return false;
   coupled_.clear();
   if (!coupled_.build(coupling_, num_shell_, condensed, *cholesky_)) {
     refresh_failure_ = "the coupled rows' Woodbury correction is singular";
@@ -228,7 +229,7 @@ bool ContactJacobianSolver::refresh_penalized(const std::vector<int>& rows) {
         rows_[static_cast<std::size_t>(i)].b > 0.0 ? rows_[static_cast<std::size_t>(i)].b : kappa_;
     row.a = kCondensationFloor * row.b / kappa_;
   }
-  if (refresh_with(condensed, false)) return true;  // the stability analysis needs H itself
+  if (refresh_with(condensed, Shift::kNone)) return true;  // the stability analysis needs H itself
   // What factorize() would have done at this linearisation.
   if (!refresh_preconditioner()) factor_fallback(true);
   return false;
@@ -275,7 +276,8 @@ void ContactJacobianSolver::factor_fallback(bool may_shift) {
     // the shift is kept for where the LU is out of reach.
     if (lu_.out_of_memory()) {
       lu_out_of_memory_ = true;
-      if (may_shift && refresh_with(rows_, true) && (!border_ || prepare_border())) return;
+      // H (from rows_) failed just before this fallback was called: the shifts only.
+      if (may_shift && refresh_with(rows_, Shift::kOnly) && (!border_ || prepare_border())) return;
     }
     fail(e.what());
   }

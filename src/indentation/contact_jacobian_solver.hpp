@@ -96,22 +96,27 @@ class ContactJacobianSolver {
   bool refresh_preconditioner();
   // H = sym(T^T A) + sum_i (b_i / a_i) G~_i G~_i^T over `condensed` (the current rows with their
   // weights), factored; kept with its rows on success.
-  // `shift`: where H is not positive definite, a shifted H may make the preconditioner
-  // (factor_shell_block).
-  bool refresh_with(const std::vector<ContactJacobianRow>& condensed, bool shift);
+  // `shift`: whether H + sigma |diag(shell block)| may make it (factor_shell_block).
+  enum class Shift {
+    kNone,      // H itself or nothing
+    kIfNeeded,  // H, else the first shift that factors
+    kOnly,      // the shifts only: H failed at this linearisation already
+  };
+  bool refresh_with(const std::vector<ContactJacobianRow>& condensed, Shift shift);
   // Cholesky of H_ as it is; false (refresh_failure_ says why) if it fails.
   bool factor_h();
-  // H_'s factor, or (shell_diagonal not empty) that of H_ + sigma |diag(shell block)| for the
-  // first sigma of kShifts that factors.
-  bool factor_shell_block(const std::vector<double>& shell_diagonal);
+  // H_'s factor (unless `shift` is kOnly), else (unless kNone) that of H_ + sigma
+  // |shell_diagonal| for the first sigma of kShifts that factors.
+  bool factor_shell_block(Shift shift, const std::vector<double>& shell_diagonal);
   void apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
   // P^-1 on the shell and contact rows (in and out without the border).
   void apply_condensed(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
   // The border's c, d, e from J, and P^-1 c and the pivot e - d^T P^-1 c with the current P;
   // false if the pivot vanishes.
   bool prepare_border();
-  // The LU of J; where it runs out of memory and `may_shift`, the preconditioner of a shifted H
-  // instead (and for the rest of the solver's life, before any LU). Throws if neither.
+  // The LU of J; where it runs out of memory and `may_shift` (the caller's H of rows_ has just
+  // failed), the preconditioner of a shifted H instead, and for the rest of the solver's life no
+  // LU. Throws if neither.
   void factor_fallback(bool may_shift);
   // T^T v on the rotation pairs of v's first num_shell entries (in place).
   static void transpose_transform(const std::vector<ShellChart::RotationBlock>& rotations,
