@@ -110,6 +110,9 @@ struct Branch {
   Status status = Status::kRunning;
   std::string reason;
   int failed_steps = 0;  // corrector failures that were retried with a smaller step
+  // How many of `points` the last checkpoint holds (written by this run, or the one it resumed
+  // from): a resume continues from points[checkpointed - 1]. 0: no checkpoint.
+  std::size_t checkpointed = 0;
 };
 
 // Called after each accepted point (the start point included), after its events were added to

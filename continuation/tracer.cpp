@@ -65,6 +65,7 @@ class Tracer {
       throw std::invalid_argument(
           "continuation: the checkpoint's monitors differ from the problem's");
     branch_ = checkpoint.branch;
+    branch_.checkpointed = branch_.points.size();
     state_ = checkpoint.state;
     branch_id_ = state_.current.point.branch_id;
     for (const auto& point : branch_.points) scales_.include(point);
@@ -339,7 +340,8 @@ class Tracer {
     return false;
   }
 
-  void save_state() const {
+  void save_state() {
+    branch_.checkpointed = branch_.points.size();
     const nlohmann::json attachment =
         settings_.checkpoint_attachment ? settings_.checkpoint_attachment() : nlohmann::json();
     save_checkpoint(settings_.checkpoint_path, {stepper_.method(), branch_, state_, attachment},

@@ -443,6 +443,7 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
                                          on_point);
   }
   r.events = b.events;
+  r.checkpointed_points = b.checkpointed;
   if (!b.points.empty() && b.points.back().x.size() > 0) r.final_unknowns = b.points.back().x;
   const bool ok = b.status == cont::Status::kCompleted || b.status == cont::Status::kReachedBound;
   finish(r, ok, run_status(b.status), end_reason(b, s.spec.path));

@@ -107,6 +107,9 @@ struct PathResult {
   bool completed = false;           // reached the end of the path
   RunStatus status = RunStatus::kFailed;
   std::string reason;  // why it stopped early; empty when completed
+  // How many of `points` the run's checkpoint file holds: `--resume` continues from
+  // points[checkpointed_points - 1] (a stopped run keeps its last periodic checkpoint). 0: none.
+  std::size_t checkpointed_points = 0;
   // The problem's unknowns at the last point (to write its fields); empty if there is none.
   cont::Vector final_unknowns;
   // path.stability: every point has its stability, and the results carry its columns.

@@ -231,6 +231,20 @@ void add_force_errors(const IndentationCase& run, int threads, PathResult& r, st
         << "): the points beyond it have no force_error_estimate\n";
 }
 
+// Where `--resume` would go on from: a stopped run keeps its last periodic checkpoint (so that a
+// resume repeats the uninterrupted run bit for bit), which may lie several points back, or be
+// the start's only.
+void print_resume_point(const PathResult& r, int interval, std::ostream& err) {
+  const std::size_t held = r.checkpointed_points;
+  if (held == 0 || held > r.points.size()) return;
+  err << "run: --resume continues from depth "
+      << format_quantity(r.points[held - 1].state.depth, Dimension::kLength);
+  if (held < r.points.size())
+    err << ", point " << held << " of " << r.points.size() << " (a checkpoint is kept every "
+        << interval << " points; the " << r.points.size() - held << " after it are solved again)";
+  err << "\n";
+}
+
 }  // namespace
 
 int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream& err) {
@@ -345,6 +359,7 @@ int run_run_command(const RunCommandOptions& o, std::ostream& out, std::ostream&
               ? ""
               : " at depth " + format_quantity(r.points.back().state.depth, Dimension::kLength))
       << ": " << r.reason << "\n";
+  print_resume_point(r, control.checkpoint_interval, err);
   return 1;
 }
 

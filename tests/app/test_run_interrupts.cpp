@@ -209,6 +209,13 @@ TEST(RunInterrupts, SigtermWritesEveryPointAndTheResumeIsBitIdentical) {
   EXPECT_TRUE(fs::exists(out / "path.csv"));
   EXPECT_TRUE(fs::exists(out / "events.json"));
   EXPECT_EQ(stopped.at("reason"), "interrupted (SIGTERM)");  // not "stopped by the callback"
+  // The stop says where a resume goes on: before point 10, from the start's checkpoint (a
+  // stopped run keeps its last periodic one).
+  const std::size_t n = stopped.at("points").size();
+  EXPECT_TRUE(contains(log, "--resume continues from depth")) << log;
+  if (n < 10) {
+    EXPECT_TRUE(contains(log, "from depth 0 mm, point 1 of " + std::to_string(n))) << log;
+  }
 
   const auto resumed = run_cli(run_args(run.case_file, out) + " --resume");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;

@@ -200,6 +200,33 @@ TEST(ContCheckpoint, AttachmentIsInStepWithTheBranchAndCachesAreDroppedAtCheckpo
   fs::remove(temp_path("rest.json"));
 }
 
+// What a resume would continue from, as the run reports it (Branch::checkpointed): the CLI's
+// stop message tells the user the depth from it.
+TEST(ContCheckpoint, TheBranchSaysHowManyPointsItsCheckpointHolds) {
+  Settings s = line_settings(temp_path("held.json"));
+  CountingLine line;
+  int seen = 0;
+  const Callback stop_at_five = [&](const Point&, const Branch&) { return ++seen < 5; };
+  const Branch stopped = natural(line, Vector::Zero(1), 0.0, s, stop_at_five);
+  ASSERT_EQ(stopped.status, Status::kStoppedByCallback);
+  EXPECT_EQ(stopped.points.size(), 5u);
+  EXPECT_EQ(stopped.checkpointed, 4u);  // the step-3 checkpoint
+
+  const Checkpoint kept = load_checkpoint(s.checkpoint_path);
+  const Callback stop_at_once = [](const Point&, const Branch&) { return false; };
+  const Branch resumed_and_stopped = natural(line, kept, s, stop_at_once);
+  EXPECT_EQ(resumed_and_stopped.checkpointed, 4u);  // the one it resumed from
+
+  const Branch whole = natural(line, Vector::Zero(1), 0.0, s);
+  ASSERT_EQ(whole.status, Status::kReachedBound);
+  EXPECT_EQ(whole.checkpointed, whole.points.size());  // written at the end
+
+  s.checkpoint_path.clear();
+  s.checkpoint_interval = 0;
+  EXPECT_EQ(natural(line, Vector::Zero(1), 0.0, s).checkpointed, 0u);
+  fs::remove(temp_path("held.json"));
+}
+
 TEST(ContCheckpoint, JsonRoundTripIsExact) {
   Checkpoint c;
   c.method = Method::kNatural;
