@@ -21,14 +21,6 @@ constexpr double kCondensationFloor = 1e-8;
 // until a solve needs more than this, or it is older than kMaxPreconditionerAge linearisations.
 constexpr int kRefreshProducts = 3;
 constexpr int kMaxPreconditionerAge = 20;
-// Where H is not positive definite and the LU is out of reach, the factor of H + sigma |diag| (the
-// shell block's diagonal) for the first of these that is (Nocedal & Wright 2006, Algorithm 3.3,
-// the multiple of the identity scaled by the diagonal): GMRES still solves J itself, and pays in
-// products for the eigenvalues of H below sigma |H_ii|, so the smallest shift that factors is
-// taken. Why: past 9.63 mm the 1e6-unknown cap's H was not positive definite and UMFPACK ran out
-// of memory on its LU (docs/performance.md).
-constexpr std::array<double, 3> kShifts = {1e-6, 1e-4, 1e-2};
-
 }  // namespace
 
 ContactJacobianSolver::ContactJacobianSolver(double kappa, LinearSolverKind fallback,
@@ -107,7 +99,7 @@ void ContactJacobianSolver::transpose_transform(
 // H = sym(T^T A) + condensed rows from the current linearisation; false if H is not positive
 // definite.
 bool ContactJacobianSolver::refresh_preconditioner() {
-  return refresh_with(rows_, lu_out_of_memory_ ? Shift::kIfNeeded : Shift::kNone);
+  return refresh_with(rows_, lu_out_of_memory_ ? Indefinite::kIfNeeded : Indefinite::kNone);
 }
 
 bool ContactJacobianSolver::factor_h() {
@@ -122,31 +114,35 @@ bool ContactJacobianSolver::factor_h() {
   }
 }
 
-bool ContactJacobianSolver::factor_shell_block(Shift shift,
-                                               const std::vector<double>& shell_diagonal) {
-  if (shift != Shift::kOnly && factor_h()) return true;
-  if (shift == Shift::kNone) return false;
-  const std::string unshifted = refresh_failure_;
-  double* hv = H_.valuePtr();
-  std::vector<double> diagonal(diagonal_slot_.size());
-  for (std::size_t c = 0; c < diagonal.size(); ++c) diagonal[c] = hv[diagonal_slot_[c]];
-  for (const double sigma : kShifts) {
-    for (std::size_t c = 0; c < diagonal.size(); ++c)
-      hv[diagonal_slot_[c]] = diagonal[c] + sigma * std::abs(shell_diagonal[c]);
-    if (factor_h()) {
-      ++counters_.shifted;
-      return true;
-    }
+bool ContactJacobianSolver::factor_shell_block(Indefinite indefinite) {
+  if (indefinite != Indefinite::kOnly && factor_h()) {
+    factor_ = cholesky_.get();
+    return true;
   }
-  char why[96];
-  std::snprintf(why, sizeof why, "; shifted by up to %g |diag|, still not factored",
-                kShifts.back());
-  refresh_failure_ = unshifted + why;
-  return false;
+  if (indefinite == Indefinite::kNone) return false;
+  // The LDL' of H itself: an exact preconditioner however many eigenvalues are negative. A
+  // shifted Cholesky (H + sigma |diag|, Nocedal & Wright 2006, Alg. 3.3) was tried first: on the
+  // 1e6 cap past 9.63 mm Newton then needed 21 iterations for a 0.24 mm step and failed its line
+  // search (docs/performance.md), GMRES paying for every eigenvalue the shift moved.
+  const std::string cholesky_failure = refresh_failure_;
+  if (!ldlt_) {
+    ldlt_ = make_linear_solver(LinearSolverKind::kLdlt);
+    ldlt_->analyze(H_);
+  }
+  try {
+    ++counters_.ldlt;
+    ldlt_->factorize(H_);
+    factor_ = ldlt_.get();
+    return true;
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::kNumerical) throw;
+    refresh_failure_ = cholesky_failure + "; its LDL' neither: " + e.what();
+    return false;
+  }
 }
 
 bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& condensed,
-                                         Shift shift) {
+                                         Indefinite indefinite) {
   if (rotation_slots_.empty())
     for (std::size_t i = 0; i < rotations_.size(); ++i) {
       const ShellChart::RotationBlock& r = rotations_[i];
@@ -183,13 +179,6 @@ bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& 
   }
   double* hv = H_.valuePtr();
   for (int k = 0; k < H_.nonZeros(); ++k) hv[k] = 0.5 * (m[k] + m[mirror_[k]]);
-  // The shift's scale: the shell's own diagonal. The condensed rows' penalties (kappa / 1e-8 on a
-  // fully active row) would make a shift of 1e-6 of theirs hundreds of times the shell's
-  // stiffness, and GMRES pays for that (measured on the synthetic Jacobian of the tests: 60
-  // products without converging).
-  std::vector<double> shell_diagonal;
-  if (shift != Shift::kNone)
-    for (int slot : diagonal_slot_) shell_diagonal.push_back(hv[slot]);
   for (std::size_t i = 0; i < condensed.size(); ++i) {
     const ContactJacobianRow& row = condensed[i];
     if (row.b == 0.0) continue;
@@ -200,9 +189,9 @@ bool ContactJacobianSolver::refresh_with(const std::vector<ContactJacobianRow>& 
           hv[row_slots_[i][5 * r + c]] += w * row.gradient[r] * row.gradient[c];
   }
   has_preconditioner_ = false;
-  if (!factor_shell_block(shift, shell_diagonal)) return false;
+  if (!factor_shell_block(indefinite)) return false;
   coupled_.clear();
-  if (!coupled_.build(coupling_, num_shell_, condensed, *cholesky_)) {
+  if (!coupled_.build(coupling_, num_shell_, condensed, *factor_)) {
     refresh_failure_ = "the coupled rows' Woodbury correction is singular";
     return false;
   }
@@ -229,7 +218,8 @@ bool ContactJacobianSolver::refresh_penalized(const std::vector<int>& rows) {
         rows_[static_cast<std::size_t>(i)].b > 0.0 ? rows_[static_cast<std::size_t>(i)].b : kappa_;
     row.a = kCondensationFloor * row.b / kappa_;
   }
-  if (refresh_with(condensed, Shift::kNone)) return true;  // the stability analysis needs H itself
+  if (refresh_with(condensed, Indefinite::kNone))
+    return true;  // the stability analysis needs H itself
   // What factorize() would have done at this linearisation.
   if (!refresh_preconditioner()) factor_fallback(true);
   return false;
@@ -238,7 +228,7 @@ bool ContactJacobianSolver::refresh_penalized(const std::vector<int>& rows) {
 Eigen::VectorXd ContactJacobianSolver::solve_shell_block(const Eigen::VectorXd& r) const {
   SI_REQUIRE(has_preconditioner_ && r.size() == num_shell_,
              "contact Jacobian: no shell factor to solve with");
-  return cholesky_->solve(r);
+  return factor_->solve(r);
 }
 
 SparseMatrix ContactJacobianSolver::chart_gradients(const std::vector<int>& rows) const {
@@ -254,7 +244,7 @@ SparseMatrix ContactJacobianSolver::chart_gradients(const std::vector<int>& rows
   return G;
 }
 
-void ContactJacobianSolver::factor_fallback(bool may_shift) {
+void ContactJacobianSolver::factor_fallback(bool may_ldlt) {
   // Both routes' reasons in one message: why the preconditioner could not be used, and why the
   // LU failed.
   const auto fail = [this](const std::string& lu_failure) {
@@ -270,14 +260,15 @@ void ContactJacobianSolver::factor_fallback(bool may_shift) {
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::kNumerical) throw;
     // Out of memory (the LU of a 1e6-unknown shell needs more than its Cholesky factor): from
-    // now on a shifted H preconditions GMRES where H itself has no Cholesky factor, and no LU is
+    // now on the LDL' of H preconditions GMRES where H has no Cholesky factor, and no LU is
     // tried. Near a singular J an LU's solves are the more accurate (measured on the roof's
-    // fold: its force 1.45e-6 off the bifurcation's with the shifted H, 2.6e-7 with the LU), so
-    // the shift is kept for where the LU is out of reach.
+    // fold: its force 1.45e-6 off the bifurcation's with a shifted H, 2.6e-7 with the LU), so
+    // the LDL' is kept for where the LU is out of reach.
     if (lu_.out_of_memory()) {
       lu_out_of_memory_ = true;
-      // H (from rows_) failed just before this fallback was called: the shifts only.
-      if (may_shift && refresh_with(rows_, Shift::kOnly) && (!border_ || prepare_border())) return;
+      // H (from rows_) failed its Cholesky just before this fallback was called: the LDL' only.
+      if (may_ldlt && refresh_with(rows_, Indefinite::kOnly) && (!border_ || prepare_border()))
+        return;
     }
     fail(e.what());
   }
@@ -393,8 +384,8 @@ void ContactJacobianSolver::apply_condensed(const Eigen::VectorXd& in, Eigen::Ve
     for (int k = 0; k < 5; ++k)
       if (row.eq[k] >= 0) r[row.eq[k]] += row.gradient[k] * out[nf + i];
   }
-  Eigen::VectorXd y = cholesky_->solve(r);
-  coupled_.correct_shell(y, *cholesky_);
+  Eigen::VectorXd y = factor_->solve(r);
+  coupled_.correct_shell(y, *factor_);
   out.head(nf) = y;
   Eigen::VectorXd s(nr);
   for (int i = 0; i < nr; ++i) {

@@ -12,8 +12,9 @@
 // UMFPACK's LU of J, its solves three times (docs/performance.md), and its pattern never changes
 // with the candidate set. Where H is not positive definite (past a limit point) or GMRES does not
 // converge, the solve falls back to an LU of J (the `fallback` solver, UMFPACK by default). Where
-// that LU runs out of memory (a million unknowns), the preconditioner is made from H shifted by
-// a small multiple of its diagonal instead, and no LU is tried again.
+// that LU runs out of memory (a million unknowns), the preconditioner is made from an LDL' of H
+// without pivoting (exact for an indefinite H, slower than its Cholesky), and no LU is tried
+// again.
 // Candidates appended to the set (same shell block) keep the factor: their rows enter the
 // preconditioner uncondensed until the next refresh.
 // Rows that couple each other (Da not diagonal: the elastic face's compliance over its zone,
@@ -42,8 +43,8 @@
 namespace si {
 
 struct ContactJacobianCounters {
-  long cholesky = 0;         // factorizations of H (each shift tried counts)
-  long shifted = 0;          // preconditioners made from a shifted H (not positive definite)
+  long cholesky = 0;         // Cholesky factorizations of H
+  long ldlt = 0;             // LDL' factorizations of an indefinite H (no LU in memory)
   long lu_fallbacks = 0;     // factorizations of J by the fallback LU
   long krylov_solves = 0;    // GMRES solves
   long krylov_products = 0;  // products with J in them
@@ -96,28 +97,27 @@ class ContactJacobianSolver {
   bool refresh_preconditioner();
   // H = sym(T^T A) + sum_i (b_i / a_i) G~_i G~_i^T over `condensed` (the current rows with their
   // weights), factored; kept with its rows on success.
-  // `shift`: whether H + sigma |diag(shell block)| may make it (factor_shell_block).
-  enum class Shift {
-    kNone,      // H itself or nothing
-    kIfNeeded,  // H, else the first shift that factors
-    kOnly,      // the shifts only: H failed at this linearisation already
+  // `indefinite`: whether the LDL' of H may make it where H is not positive definite.
+  enum class Indefinite {
+    kNone,      // H's Cholesky or nothing
+    kIfNeeded,  // H's Cholesky, else its LDL'
+    kOnly,      // the LDL' only: H's Cholesky failed at this linearisation already
   };
-  bool refresh_with(const std::vector<ContactJacobianRow>& condensed, Shift shift);
+  bool refresh_with(const std::vector<ContactJacobianRow>& condensed, Indefinite indefinite);
   // Cholesky of H_ as it is; false (refresh_failure_ says why) if it fails.
   bool factor_h();
-  // H_'s factor (unless `shift` is kOnly), else (unless kNone) that of H_ + sigma
-  // |shell_diagonal| for the first sigma of kShifts that factors.
-  bool factor_shell_block(Shift shift, const std::vector<double>& shell_diagonal);
+  // H_'s Cholesky (unless kOnly), else (unless kNone) its LDL' (ldlt_solver.hpp); sets factor_.
+  bool factor_shell_block(Indefinite indefinite);
   void apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
   // P^-1 on the shell and contact rows (in and out without the border).
   void apply_condensed(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
   // The border's c, d, e from J, and P^-1 c and the pivot e - d^T P^-1 c with the current P;
   // false if the pivot vanishes.
   bool prepare_border();
-  // The LU of J; where it runs out of memory and `may_shift` (the caller's H of rows_ has just
-  // failed), the preconditioner of a shifted H instead, and for the rest of the solver's life no
-  // LU. Throws if neither.
-  void factor_fallback(bool may_shift);
+  // The LU of J; where it runs out of memory and `may_ldlt` (the caller's H of rows_ has just
+  // failed its Cholesky), the preconditioner of H's LDL' instead, and for the rest of the
+  // solver's life no LU. Throws if neither.
+  void factor_fallback(bool may_ldlt);
   // T^T v on the rotation pairs of v's first num_shell entries (in place).
   static void transpose_transform(const std::vector<ShellChart::RotationBlock>& rotations,
                                   Eigen::VectorXd& v);
@@ -135,9 +135,11 @@ class ContactJacobianSolver {
   std::vector<RotationSlots> rotation_slots_;   // per (rotation block, column of its rows)
   std::vector<std::array<int, 25>> row_slots_;  // per contact row: its 5x5 block in H_
   std::unique_ptr<LinearSolver> cholesky_;
-  CoupledLu lu_;                   // the fallback, with the rows' couplings
-  bool use_lu_ = false;            // this factorize() went to the fallback LU
-  bool lu_out_of_memory_ = false;  // the LU ran out of memory once: shifted H before it
+  std::unique_ptr<LinearSolver> ldlt_;    // H's LDL', made where the LU ran out of memory
+  const LinearSolver* factor_ = nullptr;  // the preconditioner's: cholesky_ or ldlt_
+  CoupledLu lu_;                          // the fallback, with the rows' couplings
+  bool use_lu_ = false;                   // this factorize() went to the fallback LU
+  bool lu_out_of_memory_ = false;         // the LU ran out of memory once: H's LDL' instead
   int border_ = 0;
   Eigen::VectorXd border_column_, border_row_, border_solution_;  // c, d, P^-1 c
   double border_corner_ = 0, border_pivot_ = 0;                   // e, e - d^T P^-1 c

@@ -254,6 +254,7 @@ nlohmann::json path_json(const IndentationSetup& setup, const PathResult& result
         {"stability_direct", setup.problem->counters().stability_direct},
         {"preconditioner_factorizations", setup.problem->solver_counters().cholesky},
         {"lu_fallbacks", setup.problem->solver_counters().lu_fallbacks},
+        {"preconditioner_ldlt_factorizations", setup.problem->solver_counters().ldlt},
         {"krylov_solves", setup.problem->solver_counters().krylov_solves},
         {"krylov_products", setup.problem->solver_counters().krylov_products}}},
       {"status", run_status_name(result.status)},

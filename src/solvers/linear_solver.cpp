@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "solvers/cholmod_solver.hpp"
 #include "solvers/klu_solver.hpp"
+#include "solvers/ldlt_solver.hpp"
 #include "solvers/umfpack_solver.hpp"
 
 namespace si {
@@ -17,6 +18,8 @@ std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind) {
       return std::make_unique<UmfpackSolver>();
     case LinearSolverKind::kKlu:
       return std::make_unique<KluSolver>();
+    case LinearSolverKind::kLdlt:
+      return std::make_unique<LdltSolver>();
   }
   throw Error(ErrorKind::kInternal, "make_linear_solver: unknown solver kind");
 }

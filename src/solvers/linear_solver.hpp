@@ -19,8 +19,9 @@ namespace si {
 // A well-supported but very thin shell has pivot ratios of order (t/L)^2 (h/L)^2, far above.
 constexpr double kSingularRcond = 1e-14;
 
-// cholmod: supernodal Cholesky (SPD); umfpack, klu: general sparse LU.
-enum class LinearSolverKind { kCholmod, kUmfpack, kKlu };
+// cholmod: supernodal Cholesky (SPD); umfpack, klu: general sparse LU; ldlt: symmetric LDL'
+// without pivoting (indefinite allowed, ldlt_solver.hpp).
+enum class LinearSolverKind { kCholmod, kUmfpack, kKlu, kLdlt };
 
 class LinearSolver {
  public:

@@ -167,15 +167,15 @@ void factor_and_check(ContactJacobianSolver& solver, const Synthetic& s) {
   expect_matches_dense_lu(solver, s.full());
 }
 
-// The same by a fresh solver with UMFPACK as its fallback, which took `cholesky` factors of H,
-// `lu` LUs and `shifted` shifted factors, and at most `products` GMRES products.
-void expect_fresh_solve(const Synthetic& s, long cholesky, long lu, long shifted, long products) {
+// The same by a fresh solver with UMFPACK as its fallback, which took `cholesky` Cholesky
+// factors of H, `lu` LUs and `ldlt` LDL' factors of H, and at most `products` GMRES products.
+void expect_fresh_solve(const Synthetic& s, long cholesky, long lu, long ldlt, long products) {
   ContactJacobianSolver solver(kKappa, LinearSolverKind::kUmfpack);
   factor_and_check(solver, s);
   const ContactJacobianCounters& c = solver.counters();
   EXPECT_EQ(c.cholesky, cholesky);
   EXPECT_EQ(c.lu_fallbacks, lu);
-  EXPECT_EQ(c.shifted, shifted);
+  EXPECT_EQ(c.ldlt, ldlt);
   EXPECT_LE(c.krylov_products, products);
 }
 
@@ -349,8 +349,8 @@ class OutOfMemoryLu : public LinearSolver {
 // make_synthetic's shell block made slightly indefinite along the free eqs 9-11 (no contact row
 // reads them, so the condensed rows cannot make H definite there): K projected off w, plus an
 // eigenvalue of -1e-3 max|diag| along w. w is then an eigenvector of H too (T is the identity on
-// eqs 9-11), the only negative one; diagonal shifts of 1e-6 and 1e-4 |diag| are too small for
-// it, 1e-2 is not. (Much nearer 0, J's condition puts GMRES's 1e-12 out of double precision.)
+// eqs 9-11), the only negative one. (Much nearer 0, J's condition puts GMRES's 1e-12 out of
+// double precision.)
 Synthetic slightly_indefinite() {
   Synthetic s = make_synthetic();
   Eigen::VectorXd w = Eigen::VectorXd::Zero(kShell);
@@ -362,36 +362,42 @@ Synthetic slightly_indefinite() {
   return s;
 }
 
-// Where H has no Cholesky factor the LU takes over, before any shift: near a singular J its
+// Where H has no Cholesky factor the LU takes over, before H's LDL': near a singular J its
 // solves are the more accurate. (No GMRES: the LU solves.)
 TEST(ContactJacobianSolver, SlightlyIndefiniteShellBlockGoesToTheLuFirst) {
   expect_fresh_solve(slightly_indefinite(), 1, 1, 0, 0);
 }
 
-// Where the LU runs out of memory, the factor of H with the smallest diagonal shift that makes
-// it definite preconditions GMRES on J itself, solved to the dense LU's answer; from then on no
-// LU is tried (it cost minutes per attempt at 1e6 unknowns). A definite H takes no shift.
-TEST(ContactJacobianSolver, LuOutOfMemoryGivesWayToAShiftedPreconditioner) {
+// Where the LU runs out of memory, the LDL' of H (indefinite, exact) preconditions GMRES on J
+// itself, solved to the dense LU's answer in as few products as a Cholesky factor would take;
+// from then on no LU is tried (it cost minutes per attempt at 1e6 unknowns), and a definite H
+// goes back to its Cholesky.
+TEST(ContactJacobianSolver, LuOutOfMemoryGivesWayToTheLdltOfH) {
   const Synthetic s = slightly_indefinite();
   ContactJacobianSolver solver(kKappa, [] { return std::make_unique<OutOfMemoryLu>(); });
   factor_and_check(solver, s);
   EXPECT_EQ(solver.counters().lu_fallbacks, 1);
-  EXPECT_EQ(solver.counters().shifted, 1);
-  // H, then 1e-6, 1e-4 and 1e-2 after the LU's failure (H is not factored twice).
-  EXPECT_EQ(solver.counters().cholesky, 4);
+  EXPECT_EQ(solver.counters().ldlt, 1);
+  EXPECT_EQ(solver.counters().cholesky, 1);  // not tried again after the LU's failure
+  EXPECT_LE(solver.counters().krylov_products, 2);
   solver.forget_preconditioner();
   factor_and_check(solver, s);
   EXPECT_EQ(solver.counters().lu_fallbacks, 1);  // not tried again
-  EXPECT_EQ(solver.counters().shifted, 2);
+  EXPECT_EQ(solver.counters().ldlt, 2);
   solver.forget_preconditioner();
   factor_and_check(solver, make_synthetic());
-  EXPECT_EQ(solver.counters().shifted, 2);
+  EXPECT_EQ(solver.counters().ldlt, 2);
+  EXPECT_EQ(solver.counters().cholesky, 3);
 }
 
-// No shift up to 1e-2 |diag| makes a negative definite block definite: with the LU out of memory
-// as well, the error names the Cholesky's failure, the shifts' and the LU's.
-TEST(ContactJacobianSolver, NoShiftAndNoLuSaysBoth) {
-  const Synthetic s = make_synthetic(-1.0);
+// A singular shell block (K of rank one: H is that and the condensed rows' rank-2 sum) has no
+// Cholesky factor and no LDL'; with the LU out of memory as well, the error names the
+// Cholesky's failure, the LDL''s and the LU's.
+TEST(ContactJacobianSolver, NoFactorOfHAndNoLuSaysAllThree) {
+  Synthetic s = make_synthetic();
+  const Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(kShell, 1.0, 2.0);
+  s.K = v * v.transpose();
+  s.D.setZero();
   const SparseMatrix J = s.jacobian();
   ContactJacobianSolver solver(kKappa, [] { return std::make_unique<OutOfMemoryLu>(); });
   try {
@@ -401,8 +407,7 @@ TEST(ContactJacobianSolver, NoShiftAndNoLuSaysBoth) {
     const std::string what = e.what();
     EXPECT_EQ(e.kind(), ErrorKind::kNumerical);
     EXPECT_NE(what.find("CHOLMOD: not positive definite, at column "), std::string::npos) << what;
-    EXPECT_NE(what.find("shifted by up to 0.01 |diag|, still not factored"), std::string::npos)
-        << what;
+    EXPECT_NE(what.find("its LDL' neither"), std::string::npos) << what;
     EXPECT_NE(what.find("out of memory (the test's LU)"), std::string::npos) << what;
   }
   try {

@@ -2,11 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
+
 #include "../model/spring_net_element.hpp"
 #include "../model/test_meshes.hpp"
 #include "core/error.hpp"
 #include "model/assembler.hpp"
 #include "model/supports.hpp"
+#include "solvers/ldlt_solver.hpp"
 
 namespace si {
 namespace {
@@ -23,13 +26,13 @@ SparseMatrix plate_tangent(const std::vector<Support>& supports, int n = 10) {
   return a.tangent;
 }
 
-TEST(LinearSolver, CholmodUmfpackAndKluAgree) {
+TEST(LinearSolver, CholmodUmfpackKluAndLdltAgree) {
   const SparseMatrix K = plate_tangent({{SupportKind::kClamped, "left", -1, {}}});
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.rows(), -1.0, 2.0);
-  Eigen::VectorXd x[3];
+  Eigen::VectorXd x[4];
   int i = 0;
-  for (const LinearSolverKind kind :
-       {LinearSolverKind::kCholmod, LinearSolverKind::kUmfpack, LinearSolverKind::kKlu}) {
+  for (const LinearSolverKind kind : {LinearSolverKind::kCholmod, LinearSolverKind::kUmfpack,
+                                      LinearSolverKind::kKlu, LinearSolverKind::kLdlt}) {
     auto solver = make_linear_solver(kind);
     EXPECT_EQ(solver->kind(), kind);
     solver->analyze(K);
@@ -45,13 +48,36 @@ TEST(LinearSolver, CholmodUmfpackAndKluAgree) {
   }
   EXPECT_LT((x[0] - x[1]).norm(), 1e-12 * x[0].norm()) << (x[0] - x[1]).norm() / x[0].norm();
   EXPECT_LT((x[0] - x[2]).norm(), 1e-12 * x[0].norm()) << (x[0] - x[2]).norm() / x[0].norm();
+  EXPECT_LT((x[0] - x[3]).norm(), 1e-12 * x[0].norm()) << (x[0] - x[3]).norm() / x[0].norm();
+}
+
+// The LDL' factors what the Cholesky cannot: the clamped plate's tangent shifted between its
+// third and fourth eigenvalues (dense eigensolver) has three negative ones. D's negative pivots
+// count them (Sylvester's law of inertia) and the solve is exact.
+TEST(LinearSolver, LdltFactorsAnIndefiniteMatrixAndCountsItsNegativeEigenvalues) {
+  const SparseMatrix K = plate_tangent({{SupportKind::kClamped, "left", -1, {}}}, 6);
+  const Eigen::VectorXd lambda =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(K)).eigenvalues();
+  const double sigma = 0.5 * (lambda[2] + lambda[3]);
+  SparseMatrix I(K.rows(), K.cols());
+  I.setIdentity();
+  SparseMatrix A = K - sigma * I;
+  A.makeCompressed();
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), -1.0, 2.0);
+  EXPECT_THROW(make_linear_solver(LinearSolverKind::kCholmod)->factorize(A), Error);
+  LdltSolver ldlt;
+  ldlt.factorize(A);
+  EXPECT_EQ(ldlt.negative_pivots(), 3);
+  const Eigen::VectorXd x = ldlt.solve(b);
+  const Eigen::VectorXd reference = Eigen::MatrixXd(A).partialPivLu().solve(b);
+  EXPECT_LT((x - reference).norm(), 1e-10 * reference.norm());
 }
 
 // No supports: three free translations. Both solvers must say so, not return garbage.
 TEST(LinearSolver, SingularFreeBodyIsReportedClearly) {
   const SparseMatrix K = plate_tangent({}, 6);
-  for (const LinearSolverKind kind :
-       {LinearSolverKind::kCholmod, LinearSolverKind::kUmfpack, LinearSolverKind::kKlu}) {
+  for (const LinearSolverKind kind : {LinearSolverKind::kCholmod, LinearSolverKind::kUmfpack,
+                                      LinearSolverKind::kKlu, LinearSolverKind::kLdlt}) {
     auto solver = make_linear_solver(kind);
     solver->analyze(K);
     try {
@@ -99,9 +125,11 @@ TEST(LinearSolver, KindsBuildTheirSolvers) {
   EXPECT_TRUE(make_linear_solver(LinearSolverKind::kCholmod)->needs_spd());
   EXPECT_FALSE(make_linear_solver(LinearSolverKind::kUmfpack)->needs_spd());
   EXPECT_FALSE(make_linear_solver(LinearSolverKind::kKlu)->needs_spd());
+  EXPECT_FALSE(make_linear_solver(LinearSolverKind::kLdlt)->needs_spd());
   EXPECT_EQ(make_linear_solver(LinearSolverKind::kCholmod)->name(), "cholmod");
   EXPECT_EQ(make_linear_solver(LinearSolverKind::kUmfpack)->name(), "umfpack");
   EXPECT_EQ(make_linear_solver(LinearSolverKind::kKlu)->name(), "klu");
+  EXPECT_EQ(make_linear_solver(LinearSolverKind::kLdlt)->name(), "ldlt");
 }
 
 }  // namespace
