@@ -18,6 +18,10 @@ class ArclengthSystem final : public NonlinearSystem {
   bool setup(const Vector& u) override;
   bool solve(Vector& b) override;
   std::string failure() const override { return problem_.failure(); }
+  // The last unknown is p (the arclength row).
+  std::string unknown_name(int i) const override {
+    return i < problem_.size() ? problem_.unknown_name(i) : "the arclength constraint";
+  }
 
  private:
   Problem& problem_;

@@ -53,6 +53,17 @@ Eigen::Map<const Vector> view(N_Vector v) {
   return {N_VGetArrayPointer(v), static_cast<Eigen::Index>(N_VGetLength(v))};
 }
 
+// Where a residual that did not converge is largest, in the system's words: a stalled
+// corrector's residual often sits on one unknown (a node, a contact row), which says more than
+// its norm.
+std::string largest_entry(const NonlinearSystem& system, const Vector& r) {
+  if (r.size() == 0) return {};
+  Eigen::Index i = 0;
+  r.cwiseAbs().maxCoeff(&i);
+  const std::string name = system.unknown_name(static_cast<int>(i));
+  return ", largest at unknown " + std::to_string(i) + (name.empty() ? "" : " (" + name + ")");
+}
+
 // What KINSOL's callbacks reach through user_data / content.
 struct Adapter {
   NonlinearSystem& system;
@@ -189,6 +200,7 @@ class FixedParameter final : public NonlinearSystem {
   bool setup(const Vector& u) override { return problem_.factorize(u, p_); }
   bool solve(Vector& b) override { return problem_.solve(b); }
   std::string failure() const override { return problem_.failure(); }
+  std::string unknown_name(int i) const override { return problem_.unknown_name(i); }
 
  private:
   Problem& problem_;
@@ -236,6 +248,7 @@ NewtonResult newton_solve(NonlinearSystem& system, Vector& u, const NewtonSettin
                     std::to_string(result.iterations) +
                     " iterations with ||F||_inf = " + sci(result.residual_norms.back()) +
                     " > tolerance " + sci(result.tolerance);
+    if (evaluated) result.reason += largest_entry(system, r);
     if (!data.messages.empty()) result.reason += " (" + data.messages + ")";
   }
   return result;

@@ -24,6 +24,8 @@ class NonlinearSystem {
   virtual bool solve(Vector& b) = 0;
   // Why the last call that returned false failed (Problem::failure); empty if not known.
   virtual std::string failure() const { return {}; }
+  // What unknown i is (Problem::unknown_name); empty if not known.
+  virtual std::string unknown_name(int) const { return {}; }
 };
 
 struct NewtonResult {

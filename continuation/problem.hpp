@@ -34,6 +34,10 @@ class Problem {
   // problem's words (e.g. which factorization and why); empty if not known. The corrector adds
   // it to its failure reason.
   virtual std::string failure() const { return {}; }
+  // What unknown (and equation) i is, in the problem's words (e.g. a node's displacement and
+  // where the node is), for a failed corrector's report of where its residual is largest;
+  // empty if not known.
+  virtual std::string unknown_name(int) const { return {}; }
 
   // dF/dp at (x, p); default: central finite difference of residual() with the relative step
   // h = eps^(1/3) max(1, |p|), which balances the O(h^2) truncation against O(eps/h) roundoff.

@@ -83,6 +83,9 @@ class IndentationProblem : public cont::Problem {
   void reset_solver_caches() override;
   // The numerical error behind the last residual() or factorize() that returned false.
   std::string failure() const override { return failure_; }
+  // A shell unknown's node (reference position, mm) and component, a contact row's candidate
+  // node, a support frame row or the local approach (unknown_name.cpp).
+  std::string unknown_name(int i) const override;
   // The gradients of the strongly active contact constraints with respect to the shell's free
   // dofs (one row per active constraint; spatial increments, before the chart transform), for
   // the tangent restricted to them; `multiplier_index` (if given) gets each row's multiplier in z.

@@ -79,6 +79,32 @@ TEST(ContKinsolCorrector, NoRootFailsWithReasonAndNoStderr) {
   EXPECT_TRUE(err.empty()) << "stderr: " << err;
 }
 
+// F = (x0 - 1, x1^2 + 1 + p): the second has no real root, the first converges. The failure
+// names where the residual is largest, in the problem's words (Problem::unknown_name).
+class NoRootInTheSecond final : public test::DenseProblem {
+ public:
+  int size() const override { return 2; }
+  bool residual(const Vector& x, double p, Vector& F) override {
+    F = Vector{{x(0) - 1.0, x(1) * x(1) + 1.0 + p}};
+    return true;
+  }
+  test::Matrix jacobian(const Vector& x, double) const override {
+    return test::Matrix{{1.0, 0.0}, {0.0, 2.0 * x(1)}};
+  }
+  std::string unknown_name(int i) const override { return i == 1 ? "the second" : "the first"; }
+};
+
+TEST(ContKinsolCorrector, FailureNamesWhereTheResidualIsLargest) {
+  NoRootInTheSecond problem;
+  Vector x{{0.0, 0.5}};
+  NewtonSettings settings = tight_settings();
+  settings.max_iterations = 30;
+  const NewtonResult result = solve_at(problem, x, 0.0, settings);
+  EXPECT_FALSE(result.converged);
+  EXPECT_NE(result.reason.find("largest at unknown 1 (the second)"), std::string::npos)
+      << result.reason;
+}
+
 // A residual that cannot be evaluated is a recoverable failure, reported, not thrown.
 class Unevaluable final : public test::DenseProblem {
  public:

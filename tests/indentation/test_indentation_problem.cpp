@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "analysis/indentation_run.hpp"
@@ -74,6 +75,28 @@ TEST(IndentationProblem, StartsAtFirstTouchWithNoForce) {
   ASSERT_TRUE(f.problem->residual(f.problem->initial_point(), 0.0, F));
   EXPECT_LT(F.cwiseAbs().maxCoeff(), 1e-9 * f.problem->stiffness_scale());
   EXPECT_GT(f.problem->candidates().size(), 1u);
+}
+
+// A failed step's report names where its residual is largest: a shell unknown by its node's
+// reference position and component (dof_map.hpp's node-major numbering), a contact row by its
+// candidate node; an index outside z names nothing.
+TEST(IndentationProblem, UnknownNamesSayWhichNodeAndComponent) {
+  IndentationFixture f(coarse_cap_case("nonlinear", "[0/90]2S"));
+  const IndentationProblem& p = *f.problem;
+  const int eq = 7;
+  const int dof = p.dofs().free_dofs()[eq];
+  const Vector3d& x = p.model().mesh.nodes[dof / kShellNodeDofs];
+  char at[64];
+  std::snprintf(at, sizeof at, " at (%.4g, %.4g, %.4g) mm", x.x(), x.y(), x.z());
+  const char* components[] = {"u1", "u2", "u3", "rotation about v1", "rotation about v2"};
+  EXPECT_EQ(p.unknown_name(eq), "node " + std::to_string(dof / kShellNodeDofs) + at + ", " +
+                                    components[dof % kShellNodeDofs]);
+  const int row = p.layout().lambda_begin() + 1;
+  EXPECT_EQ(p.unknown_name(row).rfind(
+                "the contact row of node " + std::to_string(p.candidates()[1]) + " at (", 0),
+            0u)
+      << p.unknown_name(row);
+  EXPECT_EQ(p.unknown_name(p.size()), "");
 }
 
 // The gradients of the active constraints (for the tangent restricted to them, issue 15): one
