@@ -125,11 +125,11 @@ bool ContactJacobianSolver::factor_shell_block(Indefinite indefinite) {
   // 1e6 cap past 9.63 mm Newton then needed 21 iterations for a 0.24 mm step and failed its line
   // search (docs/performance.md), GMRES paying for every eigenvalue the shift moved.
   const std::string cholesky_failure = refresh_failure_;
-  if (!ldlt_) {
-    ldlt_ = make_linear_solver(LinearSolverKind::kLdlt);
-    ldlt_->analyze(H_);
-  }
   try {
+    if (!ldlt_) {
+      ldlt_ = make_linear_solver(LinearSolverKind::kLdlt);
+      ldlt_->analyze(H_);  // may run out of memory too: said with the Cholesky's failure
+    }
     ++counters_.ldlt;
     ldlt_->factorize(H_);
     factor_ = ldlt_.get();
