@@ -67,9 +67,12 @@ std::string largest_entry(const NonlinearSystem& system, const Vector& r) {
 // What KINSOL's callbacks reach through user_data / content.
 struct Adapter {
   NonlinearSystem& system;
-  std::vector<double> norms;  // ||R|| at each iterate where the Jacobian was formed
+  const NewtonSettings& settings;
+  std::vector<double> norms;     // ||R||_inf at each iterate where the Jacobian was formed
+  std::vector<double> l2_norms;  // ||R||_2 at the same iterates (what the line search lowers)
   std::string messages;
   Vector scratch;
+  bool stalled = false;  // gave up: the residual stopped falling (NewtonSettings::stall_window)
 
   // The system's own reason for a failed call, ahead of KINSOL's generic ones.
   void note(const char* what) {
@@ -86,9 +89,24 @@ struct Adapter {
   }
   int setup(N_Vector u, N_Vector fu) {
     norms.push_back(inf_norm(view(fu)));
+    l2_norms.push_back(view(fu).norm());
+    // KINSOL forms the Jacobian once per iteration (full Newton): the place to stop a creeping
+    // iteration before it pays for another factorization. A failed set-up ends KINSol.
+    if (has_stalled()) {
+      stalled = true;
+      return -1;
+    }
     if (system.setup(view(u))) return 0;
     note("the Jacobian's set-up failed");
     return 1;
+  }
+  bool has_stalled() const {
+    // On ||R||_2, which KINSOL's line search makes fall at every accepted step: ||R||_inf may
+    // rise for an iteration while an active set settles and still converge (measured on the
+    // D7136 plate's support frame: 0.400 -> 0.764 -> 0.098 -> 2e-6).
+    const auto w = static_cast<std::size_t>(settings.stall_window);
+    const std::vector<double>& n = l2_norms;
+    return w > 0 && n.size() > w && n.back() > settings.stall_ratio * n[n.size() - 1 - w];
   }
   int solve(N_Vector x, N_Vector b) {
     scratch = view(b);
@@ -225,7 +243,7 @@ NewtonResult newton_solve(NonlinearSystem& system, Vector& u, const NewtonSettin
     return result;
   }
 
-  Adapter data{system, {}, {}, {}};
+  Adapter data{system, settings, {}, {}, {}, {}};
   Kinsol k;
   configure(k, data, u, result.tolerance, settings);
   result.flag =
@@ -239,11 +257,28 @@ NewtonResult newton_solve(NonlinearSystem& system, Vector& u, const NewtonSettin
   // Judge convergence on the returned iterate ourselves: flag 2 (step below tolerance) is not
   // a solution unless the residual says so (docs/toolchain.md §3 pitfall 1).
   result.residual_norms = data.norms;
+  if (data.stalled) {
+    // KINSOL counts the iteration whose set-up refused to go on; it made no update.
+    result.iterations = static_cast<int>(data.norms.size()) - 1;
+    result.residual_norms.pop_back();  // the returned iterate's, pushed below
+  }
   if (result.residual_norms.empty()) result.residual_norms.push_back(r0);
   const bool evaluated = system.residual(u, r) && r.allFinite();
   result.residual_norms.push_back(evaluated ? inf_norm(r) : HUGE_VAL);
   result.converged = result.flag >= 0 && evaluated && inf_norm(r) <= result.tolerance;
-  if (!result.converged) {
+  if (!result.converged && data.stalled) {
+    const std::vector<double>& n = data.l2_norms;
+    const std::size_t w = static_cast<std::size_t>(settings.stall_window);
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%g", settings.stall_ratio);
+    result.reason = "the residual stalled: ||F||_2 went from " + sci(n[n.size() - 1 - w]) + " to " +
+                    sci(n.back()) + " over the last " + std::to_string(w) +
+                    " iterations (not below " + ratio + " of where it was) after " +
+                    std::to_string(result.iterations) +
+                    " iterations, ||F||_inf = " + sci(result.residual_norms.back()) +
+                    " > tolerance " + sci(result.tolerance);
+    if (evaluated) result.reason += largest_entry(system, r);
+  } else if (!result.converged) {
     result.reason = "KINSol returned " + result.flag_name + " after " +
                     std::to_string(result.iterations) +
                     " iterations with ||F||_inf = " + sci(result.residual_norms.back()) +

@@ -40,6 +40,10 @@ void NewtonSettings::validate(const std::string& prefix) const {
   require_field(max_iterations >= 1, prefix, "max_iterations", max_iterations, "must be >= 1");
   require_field(std::isfinite(max_step) && max_step >= 0.0, prefix, "max_step", max_step,
                 "must be >= 0 (0 = automatic)");
+  require_field(stall_window >= 0, prefix, "stall_window", stall_window,
+                "must be >= 0 (0 = never give up early)");
+  require_field(std::isfinite(stall_ratio) && stall_ratio > 0.0 && stall_ratio < 1.0, prefix,
+                "stall_ratio", stall_ratio, "must lie in (0, 1)");
 }
 
 Method parse_method(const std::string& name) {

@@ -466,6 +466,11 @@ cont::NewtonSettings path_newton_settings(const IndentationSetup& s) {
   // its default, 1000 max(1, |z0|), cuts the Newton steps of a stiff shell short (measured: 2 %
   // residual decrease per iteration on the paper's cap). Allow any step the line search accepts.
   n.max_step = 1e12;
+  // A corrector whose ||R||_2 has fallen by less than 10 % over two iterations gives the step
+  // back to the continuation, which halves it: measured on the 250k-unknown cap near 9.6 mm, a
+  // creeping corrector cost 12-21 iterations (up to 12 min) before failing anyway; no converged
+  // solve of the studies and tests measured had such a stretch (docs/performance.md).
+  n.stall_window = 2;
   return n;
 }
 

@@ -85,6 +85,10 @@ TEST(ContSettings, RejectsBadNewtonSettings) {
                   "continuation.newton.max_iterations = 0");
   expect_rejected([](Settings& s) { s.newton.residual_scale = 0; },
                   "continuation.newton.residual_scale = 0");
+  expect_rejected([](Settings& s) { s.newton.stall_window = -1; },
+                  "continuation.newton.stall_window = -1");
+  expect_rejected([](Settings& s) { s.newton.stall_ratio = 1.0; },
+                  "continuation.newton.stall_ratio = 1");
   NewtonSettings newton;
   newton.residual_scale = 0;  // allowed for a standalone solve: purely relative
   EXPECT_NO_THROW(newton.validate());
