@@ -68,8 +68,12 @@ std::string largest_entry(const NonlinearSystem& system, const Vector& r) {
 struct Adapter {
   NonlinearSystem& system;
   const NewtonSettings& settings;
-  std::vector<double> norms;     // ||R||_inf at each iterate where the Jacobian was formed
-  std::vector<double> l2_norms;  // ||R||_2 at the same iterates (what the line search lowers)
+  // ||R|| at each iterate where the Jacobian was formed: _inf for the convergence test, _2 for
+  // the stall rule (what the line search lowers).
+  struct Norms {
+    double inf = 0.0, two = 0.0;
+  };
+  std::vector<Norms> norms;
   std::string messages;
   Vector scratch;
   bool stalled = false;  // gave up: the residual stopped falling (NewtonSettings::stall_window)
@@ -88,8 +92,7 @@ struct Adapter {
     return 0;
   }
   int setup(N_Vector u, N_Vector fu) {
-    norms.push_back(inf_norm(view(fu)));
-    l2_norms.push_back(view(fu).norm());
+    norms.push_back({inf_norm(view(fu)), view(fu).norm()});
     // KINSOL forms the Jacobian once per iteration (full Newton): the place to stop a creeping
     // iteration before it pays for another factorization. A failed set-up ends KINSol.
     if (has_stalled()) {
@@ -105,8 +108,8 @@ struct Adapter {
     // rise for an iteration while an active set settles and still converge (measured on the
     // D7136 plate's support frame: 0.400 -> 0.764 -> 0.098 -> 2e-6).
     const auto w = static_cast<std::size_t>(settings.stall_window);
-    const std::vector<double>& n = l2_norms;
-    return w > 0 && n.size() > w && n.back() > settings.stall_ratio * n[n.size() - 1 - w];
+    return w > 0 && norms.size() > w &&
+           norms.back().two > settings.stall_ratio * norms[norms.size() - 1 - w].two;
   }
   int solve(N_Vector x, N_Vector b) {
     scratch = view(b);
@@ -243,7 +246,7 @@ NewtonResult newton_solve(NonlinearSystem& system, Vector& u, const NewtonSettin
     return result;
   }
 
-  Adapter data{system, settings, {}, {}, {}, {}};
+  Adapter data{system, settings, {}, {}, {}};
   Kinsol k;
   configure(k, data, u, result.tolerance, settings);
   result.flag =
@@ -256,7 +259,8 @@ NewtonResult newton_solve(NonlinearSystem& system, Vector& u, const NewtonSettin
 
   // Judge convergence on the returned iterate ourselves: flag 2 (step below tolerance) is not
   // a solution unless the residual says so (docs/toolchain.md §3 pitfall 1).
-  result.residual_norms = data.norms;
+  result.residual_norms.clear();
+  for (const Adapter::Norms& n : data.norms) result.residual_norms.push_back(n.inf);
   if (data.stalled) {
     // KINSOL counts the iteration whose set-up refused to go on; it made no update.
     result.iterations = static_cast<int>(data.norms.size()) - 1;
@@ -267,12 +271,12 @@ NewtonResult newton_solve(NonlinearSystem& system, Vector& u, const NewtonSettin
   result.residual_norms.push_back(evaluated ? inf_norm(r) : HUGE_VAL);
   result.converged = result.flag >= 0 && evaluated && inf_norm(r) <= result.tolerance;
   if (!result.converged && data.stalled) {
-    const std::vector<double>& n = data.l2_norms;
+    const std::vector<Adapter::Norms>& n = data.norms;
     const std::size_t w = static_cast<std::size_t>(settings.stall_window);
     char ratio[32];
     std::snprintf(ratio, sizeof ratio, "%g", settings.stall_ratio);
-    result.reason = "the residual stalled: ||F||_2 went from " + sci(n[n.size() - 1 - w]) + " to " +
-                    sci(n.back()) + " over the last " + std::to_string(w) +
+    result.reason = "the residual stalled: ||F||_2 went from " + sci(n[n.size() - 1 - w].two) +
+                    " to " + sci(n.back().two) + " over the last " + std::to_string(w) +
                     " iterations (not below " + ratio + " of where it was) after " +
                     std::to_string(result.iterations) +
                     " iterations, ||F||_inf = " + sci(result.residual_norms.back()) +

@@ -126,12 +126,9 @@ bool ContactJacobianSolver::factor_shell_block(Indefinite indefinite) {
   // search (docs/performance.md), GMRES paying for every eigenvalue the shift moved.
   const std::string cholesky_failure = refresh_failure_;
   try {
-    if (!ldlt_) {
-      ldlt_ = make_linear_solver(LinearSolverKind::kLdlt);
-      ldlt_->analyze(H_);  // may run out of memory too: said with the Cholesky's failure
-    }
+    if (!ldlt_) ldlt_ = make_linear_solver(LinearSolverKind::kLdlt);
     ++counters_.ldlt;
-    ldlt_->factorize(H_);
+    ldlt_->factorize(H_);  // analyses first; either may run out of memory: said with the Cholesky's
     factor_ = ldlt_.get();
     return true;
   } catch (const Error& e) {
