@@ -156,7 +156,8 @@ int run(int argc, char** argv) {
   section->add_flag("--paper", so.paper,
                     "the source paper's lay-ups [theta/-theta]2S (theta = 0..90 by 15) and "
                     "[0/90]2S: table, CSV and JSON in --out");
-  section->add_option("--out", so.out_dir, "output directory for --paper")->capture_default_str();
+  section->add_option("-o,--out", so.out_dir, "output directory for --paper")
+      ->capture_default_str();
   section
       ->add_option("--vam-order", so.vam_order,
                    "polynomial order of the through-thickness elements (>= 3 gives exact G)")
@@ -167,7 +168,7 @@ int run(int argc, char** argv) {
   static_cmd->add_option("case", sto.case_file, "YAML case file with a load section")
       ->required()
       ->check(CLI::ExistingFile);
-  static_cmd->add_option("--out", sto.out_dir,
+  static_cmd->add_option("-o,--out", sto.out_dir,
                          "output directory (default: output.dir of the case file)");
   static_cmd->add_option("--threads", sto.threads, "assembly threads (0: OpenMP default)")
       ->capture_default_str();
@@ -176,7 +177,7 @@ int run(int argc, char** argv) {
   auto* run_cmd = app.add_subcommand("run", kRunHelp);
   run_cmd->add_option("case", ro.case_file, "YAML case file (default: the built-in paper cap)")
       ->check(CLI::ExistingFile);
-  run_cmd->add_option("--out", ro.out_dir, "output directory (default: output.dir of the case)");
+  run_cmd->add_option("-o,--out", ro.out_dir, "output directory (default: output.dir of the case)");
   run_cmd->add_option("--threads", ro.threads, "assembly threads (0: OpenMP default)")
       ->capture_default_str();
   run_cmd->add_flag("--resume", ro.resume,
@@ -188,7 +189,7 @@ int run(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   sweep_cmd->add_option("-j,--jobs", swo.jobs, "cases run at once (one thread each)")
       ->capture_default_str();
-  sweep_cmd->add_option("--out", swo.out_dir, "output directory (default: results/<name>)");
+  sweep_cmd->add_option("-o,--out", swo.out_dir, "output directory (default: results/<name>)");
   sweep_cmd->add_flag("--quick", swo.quick,
                       "apply the study's quick: keys (coarse smoke test of the study)");
   sweep_cmd->add_option("--emit", swo.emit_dir,
@@ -235,7 +236,7 @@ int run(int argc, char** argv) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   calibrate_cmd->add_option("--x", co.x_column, "travel column (default: the first length column)");
   calibrate_cmd->add_option("--y", co.y_column, "force column (default: the first force column)");
-  calibrate_cmd->add_option("--out", co.out_dir,
+  calibrate_cmd->add_option("-o,--out", co.out_dir,
                             "output directory (default: results/CASE_calibration)");
   calibrate_cmd
       ->add_option("--algorithm", co.settings.algorithm, "bobyqa (derivative-free) or slsqp")

@@ -102,6 +102,18 @@ TEST(Cli, PaperSweepWritesTableCsvAndJson) {
   EXPECT_EQ(nlohmann::json::parse(json).size(), 8u);
 }
 
+// `-o DIR` is what users type first (it was refused: "The following arguments were not expected").
+TEST(Cli, EveryCommandWithAnOutputDirectoryTakesTheShortFlag) {
+  for (const char* command : {"section", "static", "run", "sweep", "calibrate"}) {
+    const auto r = run_cli(std::string(command) + " --help");
+    EXPECT_TRUE(contains(r.output, "-o,--out")) << command << "\n" << r.output;
+  }
+  const fs::path dir = fresh_dir("paper_short_flag");
+  const auto r = run_cli("section --paper -o '" + dir.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "paper_sections.csv"));
+}
+
 TEST(Cli, LayupCommandExpandsNotation) {
   const auto r = run_cli("layup '[0/+-45/90]s'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
