@@ -3,17 +3,20 @@
 namespace si {
 
 void RunPace::add(double depth, double seconds) {
-  if (!first_depth_) {
-    first_depth_ = depth;
-    first_seconds_ = seconds;
+  window_.push_back({depth, seconds});
+  if (!first_step_dropped_ && window_.size() == 3) {
+    window_.pop_front();  // the first step's start: a second step now gives the pace
+    first_step_dropped_ = true;
   }
-  depth_ = depth;
-  seconds_ = seconds;
+  while (window_.size() > kWindowSteps + 1) window_.pop_front();
 }
 
 std::optional<double> RunPace::remaining(double depth_max) const {
-  if (!first_depth_ || !(depth_ > *first_depth_) || !(depth_ < depth_max)) return std::nullopt;
-  return (seconds_ - *first_seconds_) / (depth_ - *first_depth_) * (depth_max - depth_);
+  if (window_.size() < 2) return std::nullopt;
+  const Point& from = window_.front();
+  const Point& to = window_.back();
+  if (!(to.depth > from.depth) || !(to.depth < depth_max)) return std::nullopt;
+  return (to.seconds - from.seconds) / (to.depth - from.depth) * (depth_max - to.depth);
 }
 
 }  // namespace si
