@@ -15,7 +15,8 @@ namespace si {
 // - Not the first step once there is another: from first touch it builds the contact set and the
 //   preconditioner from nothing and costs many normal steps (the 1e6-unknown cap: 568 s for its
 //   first 0.1 mm, then 52-60 s per 0.05 mm: averaged from the start, the ETA after the second
-//   point said 11 h 25 min, after the sixth still 7 h 41 min, docs/performance.md).
+//   point said 11 h 25 min, after the sixth 7 h 41 min, for 1 h 25 min and 1 h 22 min left; this
+//   pace says 3 h 3 min and 3 h 24 min: the steps grow later, docs/performance.md).
 // - The last kWindowSteps steps only: a step's cost grows with the contact set, and the average
 //   since the start lags behind it.
 class RunPace {
