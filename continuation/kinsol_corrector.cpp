@@ -270,21 +270,19 @@ NewtonResult newton_solve(NonlinearSystem& system, Vector& u, const NewtonSettin
   const bool evaluated = system.residual(u, r) && r.allFinite();
   result.residual_norms.push_back(evaluated ? inf_norm(r) : HUGE_VAL);
   result.converged = result.flag >= 0 && evaluated && inf_norm(r) <= result.tolerance;
-  if (!result.converged && data.stalled) {
-    const std::vector<Adapter::Norms>& n = data.norms;
-    const std::size_t w = static_cast<std::size_t>(settings.stall_window);
-    char ratio[32];
-    std::snprintf(ratio, sizeof ratio, "%g", settings.stall_ratio);
-    result.reason = "the residual stalled: ||F||_2 went from " + sci(n[n.size() - 1 - w].two) +
-                    " to " + sci(n.back().two) + " over the last " + std::to_string(w) +
-                    " iterations (not below " + ratio + " of where it was) after " +
-                    std::to_string(result.iterations) +
-                    " iterations, ||F||_inf = " + sci(result.residual_norms.back()) +
-                    " > tolerance " + sci(result.tolerance);
-    if (evaluated) result.reason += largest_entry(system, r);
-  } else if (!result.converged) {
-    result.reason = "KINSol returned " + result.flag_name + " after " +
-                    std::to_string(result.iterations) +
+  if (!result.converged) {
+    // Why it stopped, then where the residual is: one sentence for either cause.
+    std::string cause = "KINSol returned " + result.flag_name;
+    if (data.stalled) {
+      const std::vector<Adapter::Norms>& n = data.norms;
+      const std::size_t w = static_cast<std::size_t>(settings.stall_window);
+      char ratio[32];
+      std::snprintf(ratio, sizeof ratio, "%g", settings.stall_ratio);
+      cause = "the residual stalled: ||F||_2 went from " + sci(n[n.size() - 1 - w].two) + " to " +
+              sci(n.back().two) + " over the last " + std::to_string(w) +
+              " iterations (not below " + ratio + " of where it was)";
+    }
+    result.reason = cause + " after " + std::to_string(result.iterations) +
                     " iterations with ||F||_inf = " + sci(result.residual_norms.back()) +
                     " > tolerance " + sci(result.tolerance);
     if (evaluated) result.reason += largest_entry(system, r);
