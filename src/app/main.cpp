@@ -134,6 +134,28 @@ std::string command_list(const CLI::App& app) {
   return out;
 }
 
+// CLI11 says "The following argument was not expected: --treads", and where the misspelt option
+// is followed by its value, that this value is a case file that does not exist ("case: File does
+// not exist: 2"): name the unknown option first, with the closest one of the command.
+void refuse_unknown_options(const CLI::App& command, int argc, char** argv) {
+  std::vector<std::string> known;
+  for (const CLI::Option* option : command.get_options())
+    for (const std::string& name : option->get_lnames()) known.push_back("--" + name);
+  for (int i = 2; i < argc; ++i) {
+    const std::string token = argv[i];
+    if (token == "--") return;  // what follows are values
+    if (token.size() < 3 || token.compare(0, 2, "--") != 0) continue;
+    const std::string name = token.substr(0, token.find('='));
+    if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+    std::string list;
+    for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+    throw si::Error(si::ErrorKind::kInput,
+                    "unknown option of '" + command.get_name() + "'" +
+                        si::did_you_mean(name, known) + "; its options: " + list,
+                    si::Where{"command line", "", name, 0});
+  }
+}
+
 int run(int argc, char** argv) {
   CLI::App app{kDescription, "shellindent"};
   app.set_version_flag("--version", SHELLINDENT_VERSION);
@@ -284,6 +306,8 @@ int run(int argc, char** argv) {
     throw si::Error(si::ErrorKind::kInput,
                     "unknown command" + si::did_you_mean(argv[1], names) + "\n" + command_list(app),
                     si::Where{"command line", "", argv[1], 0});
+  if (const CLI::App* command = argv[1][0] == '-' ? nullptr : app.get_subcommand(argv[1]))
+    refuse_unknown_options(*command, argc, argv);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

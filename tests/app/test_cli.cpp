@@ -114,6 +114,25 @@ TEST(Cli, EveryCommandWithAnOutputDirectoryTakesTheShortFlag) {
   EXPECT_TRUE(fs::exists(dir / "paper_sections.csv"));
 }
 
+// A misspelt option is named with the closest one, before its value can be taken for the case
+// file (CLI11 alone said "case: File does not exist: 2" for `run --treads 2`); known options,
+// `--name=value` and values after `--` pass.
+TEST(Cli, UnknownOptionIsNamedWithTheClosestOne) {
+  for (const char* args : {"run --treads 2", "run --treads=2"}) {
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+    EXPECT_TRUE(contains(r.output, "'--treads': unknown option of 'run'")) << r.output;
+    EXPECT_TRUE(contains(r.output, "did you mean '--threads'?")) << r.output;
+    EXPECT_FALSE(contains(r.output, "File does not exist")) << r.output;
+  }
+  const fs::path dir = fresh_dir("paper_long_flag");
+  const auto ok = run_cli("section --paper --out='" + dir.string() + "'");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  const auto far = run_cli("sweep --frobnicate");
+  EXPECT_EQ(far.exit_code, 2) << far.output;
+  EXPECT_TRUE(contains(far.output, "unknown option of 'sweep'; its options: --help")) << far.output;
+}
+
 TEST(Cli, LayupCommandExpandsNotation) {
   const auto r = run_cli("layup '[0/+-45/90]s'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
