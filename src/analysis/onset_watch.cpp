@@ -24,7 +24,7 @@ OnsetWatch::OnsetWatch(const IndentationSetup& setup)
 
 double OnsetWatch::linear_force(double h) {
   ++linear_solves_;
-  return twin_.problem->evaluate(fast_.solve(h), h).force;
+  return twin_.problem->indenter_force_of(fast_.multipliers(h));
 }
 
 void OnsetWatch::add(const PathPoint& p, const cont::Vector& z) {
@@ -98,7 +98,7 @@ bool OnsetWatch::solve_force(IndentationSetup& setup, double from, double h, dou
     z = in_present_layout(solved_.front().z, p);
     if (z.size() == 0 || !corrector()) return false;
   }
-  force = p.evaluate(z, h).force;
+  force = p.indenter_force(z);
   solved_.push_back({h, z, force, true});
   return true;
 }

@@ -203,6 +203,18 @@ double IndentationProblem::force_scale(const cont::Vector& z) const {
   return std::max(std::abs(force), kappa_ * 1e-3);
 }
 
+double IndentationProblem::indenter_force(const cont::Vector& z) const {
+  return indenter_force_of(contact_->multipliers(z));
+}
+
+double IndentationProblem::indenter_force_of(
+    const Eigen::Ref<const Eigen::VectorXd>& multipliers) const {
+  // Summed in ContactRows::quantities' order, so that the bits agree.
+  double force = 0;
+  for (Eigen::Index i = 0; i < multipliers.size(); ++i) force += multipliers[i];
+  return force * model_.symmetry_factor;
+}
+
 double IndentationProblem::inner(const cont::Vector& a, const cont::Vector& b) const {
   // By the layout, not by counting from the end: the multipliers sit between x and alpha.
   const UnknownLayout u = layout();

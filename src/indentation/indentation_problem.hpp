@@ -127,6 +127,11 @@ class IndentationProblem : public cont::Problem {
   const LocalContactLaw& local_law() const { return options_.local; }
   // The whole-shell force scale for tolerances: max(T_N, kappa * 1 mm * 1e-3) at z.
   double force_scale(const cont::Vector& z) const;
+  // The whole-shell indenter force T_N (N) at z, bit for bit evaluate(z, h).force, without the
+  // rest of the state (energy, curvatures, the error estimate: a recovery over the whole mesh).
+  double indenter_force(const cont::Vector& z) const;
+  // The same from the indenter's multipliers alone (z's multiplier block, in its order).
+  double indenter_force_of(const Eigen::Ref<const Eigen::VectorXd>& multipliers) const;
 
   std::vector<NodeState> node_states(const cont::Vector& z) const;
 

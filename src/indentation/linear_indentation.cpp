@@ -88,6 +88,14 @@ bool LinearIndentation::solve_pdas(const Eigen::VectorXd& q, double tol, Eigen::
 }
 
 cont::Vector LinearIndentation::solve(double h) {
+  const Eigen::VectorXd lambda = multipliers(h);
+  const Eigen::VectorXd x = solver_->solve(C_.transpose() * lambda);
+  cont::Vector z(x.size() + lambda.size());
+  z << x, lambda;
+  return z;
+}
+
+Eigen::VectorXd LinearIndentation::multipliers(double h) {
   const int nc = num_candidates();
   const Eigen::VectorXd q = g0_ - Eigen::VectorXd::Constant(nc, h);
   // Optimality tolerance on w: roundoff of S lambda, relative to the gap scale.
@@ -97,10 +105,7 @@ cont::Vector LinearIndentation::solve(double h) {
   if (!solve_pdas(q, tol, lambda)) solve_primal(q, tol, lambda);
   lambda = lambda.cwiseMax(0.0);
   lambda_ = lambda;
-  const Eigen::VectorXd x = solver_->solve(C_.transpose() * lambda);
-  cont::Vector z(x.size() + nc);
-  z << x, lambda;
-  return z;
+  return lambda;
 }
 
 // The primal active-set method for the convex QP (Nocedal & Wright 2006, Alg. 16.3).

@@ -27,6 +27,8 @@ class LinearIndentation {
 
   // The problem's unknowns z = [x ; lambda] at depth h.
   cont::Vector solve(double h);
+  // lambda alone (what the force needs): solve(h) without its back-substitution for x.
+  Eigen::VectorXd multipliers(double h);
   int last_iterations() const { return iterations_; }  // dense solves at the last depth
 
  private:

@@ -129,6 +129,13 @@ TEST(ContactSolvers, LinearFastPathAgreesWithKinsol) {
     EXPECT_LT(rel(zf.tail(z.size() - nf), z.tail(z.size() - nf)), 1e-10) << h;  // multipliers
     const IndentationState s = p.evaluate(zf, h);
     expect_kkt_and_equilibrium(s, s.force, p.stiffness_scale());
+    // The force alone (the onset watch's): the same bits as the whole state's.
+    const Eigen::Index nc = zf.size() - nf;
+    EXPECT_EQ(p.indenter_force(zf), s.force) << h;
+    EXPECT_EQ(p.indenter_force_of(zf.tail(nc)), s.force) << h;
+    // lambda without the back-substitution: the same QP solved again (warm).
+    EXPECT_LT(rel(fast.multipliers(h), zf.tail(nc)), 1e-12) << h;
+    EXPECT_EQ(p.indenter_force(z), p.evaluate(z, h).force) << h;  // and of the KINSOL solve
   }
 }
 
