@@ -35,11 +35,11 @@ void OnsetWatch::add(const PathPoint& p, const cont::Vector& z) {
   // solve per contact node (about 11,000 on the 1e6-unknown cap at 8.2 mm), for nothing: the
   // onset is then found from the points after the run (find_nonlinearity_onset).
   if (p.index > 0 && last_z_.size() == 0) {
-    passing_ = false;
+    stop_watching();
     return;
   }
   if (p.index > 0 && !(h > last_depth_)) {  // the depth turns: the first passage ends
-    passing_ = false;
+    stop_watching();
     return;
   }
   if (h > 0) {
@@ -48,11 +48,17 @@ void OnsetWatch::add(const PathPoint& p, const cont::Vector& z) {
       crossed_ = true;
       if (last_z_.size() > 0)
         solved_ = {{last_depth_, last_z_, std::nan(""), false}, {h, z, p.state.force, false}};
+      fast_.release_factor();
       return;
     }
   }
   last_depth_ = h;
   last_z_ = z;
+}
+
+void OnsetWatch::stop_watching() {
+  passing_ = false;
+  fast_.release_factor();
 }
 
 std::optional<std::pair<double, double>> OnsetWatch::bracket() const {

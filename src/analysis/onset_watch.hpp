@@ -22,7 +22,9 @@ class OnsetWatch {
   double linear_force(double h);
 
   // Feeds a converged point of the run and its state z. The watch keeps a bracket only from the
-  // path's start (index 0) on: fed a later point first (a resumed run), it keeps none.
+  // path's start (index 0) on: fed a later point first (a resumed run), it keeps none. Once it
+  // has crossed (or stopped watching) the twin's factor is freed for the rest of the run: the
+  // search after it refactors only if a trial depth's contact set needs a new S column.
   void add(const PathPoint& p, const cont::Vector& z);
 
   // The run's force at depth h inside the bracket that starts at depth `from`, solved by
@@ -39,6 +41,7 @@ class OnsetWatch {
   int trial_solves() const { return solves_; }          // corrector runs so far (tests, benchmarks)
   int trial_iterations() const { return iterations_; }  // their Newton iterations
   int linear_solves() const { return linear_solves_; }  // linear_force() calls so far
+  bool holds_twin_factor() const { return fast_.holds_factor(); }  // (tests)
 
  private:
   struct Solved {
@@ -48,6 +51,7 @@ class OnsetWatch {
     bool trial = false;  // solved after the run (its force is the run's own corrector's)
   };
   cont::Vector start_for(const IndentationProblem& p, double h) const;
+  void stop_watching();
 
   IndentationSetup twin_;
   LinearIndentation fast_;

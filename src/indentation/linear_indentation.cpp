@@ -8,15 +8,12 @@
 
 namespace si {
 
-LinearIndentation::LinearIndentation(const IndentationProblem& problem)
-    : problem_(problem), solver_(make_linear_solver(LinearSolverKind::kCholmod)) {
+LinearIndentation::LinearIndentation(const IndentationProblem& problem) : problem_(problem) {
   SI_REQUIRE(problem.model().kinematics == Kinematics::kLinear,
              "the linear fast path needs linear kinematics");
   SI_REQUIRE(problem.num_local_unknowns() == 0,
              "the linear fast path cannot carry a power-law local contact (it is nonlinear)");
-  const SparseMatrix& K = problem.linear_tangent();
-  solver_->analyze(K);
-  solver_->factorize(K);
+  factor();
   C_ = problem.contact_matrix();
   Ct_ = C_.transpose();
   g0_ = problem.reference_gaps();
@@ -26,10 +23,20 @@ LinearIndentation::LinearIndentation(const IndentationProblem& problem)
 
 LinearIndentation::~LinearIndentation() = default;
 
+LinearSolver& LinearIndentation::factor() {
+  if (!solver_) {
+    solver_ = make_linear_solver(LinearSolverKind::kCholmod);
+    const SparseMatrix& K = problem_.linear_tangent();
+    solver_->analyze(K);
+    solver_->factorize(K);
+  }
+  return *solver_;
+}
+
 const Eigen::VectorXd& LinearIndentation::column(int j) {
   Eigen::VectorXd& c = columns_[j];
   if (c.size() == 0) {
-    c = C_ * solver_->solve(Eigen::VectorXd(Ct_.col(j)));
+    c = C_ * factor().solve(Eigen::VectorXd(Ct_.col(j)));
     // A linear local law's share: c_L++ / A_j (vam) or the elastic face's coefficients.
     problem_.add_local_compliance_column(j, c);
   }
@@ -89,7 +96,7 @@ bool LinearIndentation::solve_pdas(const Eigen::VectorXd& q, double tol, Eigen::
 
 cont::Vector LinearIndentation::solve(double h) {
   const Eigen::VectorXd lambda = multipliers(h);
-  const Eigen::VectorXd x = solver_->solve(C_.transpose() * lambda);
+  const Eigen::VectorXd x = factor().solve(C_.transpose() * lambda);
   cont::Vector z(x.size() + lambda.size());
   z << x, lambda;
   return z;

@@ -30,6 +30,11 @@ class LinearIndentation {
   // lambda alone (what the force needs): solve(h) without its back-substitution for x.
   Eigen::VectorXd multipliers(double h);
   int last_iterations() const { return iterations_; }  // dense solves at the last depth
+  // Frees K's factor (on a 1e6-unknown shell gigabytes) until a solve needs it again: then it is
+  // factored anew, to the same bits (CHOLMOD is deterministic). The S columns computed so far
+  // are kept, so depths whose contact sets need no new column never refactor.
+  void release_factor() { solver_.reset(); }
+  bool holds_factor() const { return solver_ != nullptr; }
 
  private:
   int num_candidates() const { return static_cast<int>(C_.rows()); }
@@ -41,6 +46,8 @@ class LinearIndentation {
   Eigen::VectorXd minimiser_on(const Eigen::VectorXd& q, const std::vector<int>& free);
   bool solve_pdas(const Eigen::VectorXd& q, double tol, Eigen::VectorXd& lambda);
   void solve_primal(const Eigen::VectorXd& q, double tol, Eigen::VectorXd& lambda);
+  // K's factor, made when first needed (again after release_factor()).
+  LinearSolver& factor();
   const IndentationProblem& problem_;
   std::unique_ptr<LinearSolver> solver_;
   SparseMatrix C_;

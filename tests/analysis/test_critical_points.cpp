@@ -347,6 +347,39 @@ TEST(OnsetWatch, TrialSolvesReuseSolvedStatesAndAgreeWithNaturalSolves) {
   EXPECT_NEAR(t, force_at("nonlinear", near), 1e-8 * std::abs(t));
 }
 
+// Once the run has crossed, the twin's factor is freed for the rest of the run; a linear force
+// asked after it (the onset search's) is the same, bit for bit, as that of a twin that kept its
+// factor: refactored where a new Schur column needs it, else from the kept columns.
+TEST(OnsetWatch, FreesTheTwinsFactorOnceCrossedAndAnswersTheSameAfter) {
+  IndentationSetup s(small_cap("nonlinear", 3.0), 1);
+  const std::shared_ptr<OnsetWatch> watch = watch_onset(s);
+  const std::shared_ptr<OnsetWatch> kept = watch_onset(s);  // fed nothing: keeps its factor
+  ASSERT_TRUE(watch && kept);
+  EXPECT_TRUE(watch->holds_twin_factor());
+  PathControl control;
+  control.critical_points = false;
+  bool held_before_crossing = true;
+  const auto check = [&](const PathPoint&, const cont::Vector&) {
+    if (!watch->bracket())
+      held_before_crossing = held_before_crossing && watch->holds_twin_factor();
+    return true;
+  };
+  const PathResult r = run_indentation_path(s, watching(watch, check), control);
+  ASSERT_TRUE(r.completed) << r.reason;
+  const auto bracket = watch->bracket();
+  ASSERT_TRUE(bracket.has_value());
+  EXPECT_TRUE(held_before_crossing);
+  EXPECT_FALSE(watch->holds_twin_factor());
+  const auto [from, to] = *bracket;
+  // Inside the bracket (the search's depths) and far beyond it (new columns: refactored).
+  for (double h : {from + 0.3 * (to - from), to, 2.5}) {
+    const double freed = watch->linear_force(h);
+    EXPECT_EQ(freed, kept->linear_force(h)) << h;
+    EXPECT_NEAR(freed, force_at("linear", h), 1e-9 * std::abs(freed)) << h;
+  }
+  EXPECT_TRUE(watch->holds_twin_factor());  // 2.5 mm needed new columns
+}
+
 // A resumed run feeds the watch from its checkpoint's point on: the passage's start and any
 // bracket are behind it, so the watch keeps none and solves no linear twin (at the resumed depth
 // that costs a solve per contact node: over ten minutes on the 1e6-unknown cap). Fed the same
