@@ -199,8 +199,7 @@ bool IndentationProblem::residual_p(const cont::Vector& z, double h, cont::Vecto
 }
 
 double IndentationProblem::force_scale(const cont::Vector& z) const {
-  const double force = contact_->multipliers(z).sum() * model_.symmetry_factor;
-  return std::max(std::abs(force), kappa_ * 1e-3);
+  return std::max(std::abs(indenter_force(z)), kappa_ * 1e-3);
 }
 
 double IndentationProblem::indenter_force(const cont::Vector& z) const {

@@ -30,9 +30,10 @@ class LinearIndentation {
   // lambda alone (what the force needs): solve(h) without its back-substitution for x.
   Eigen::VectorXd multipliers(double h);
   int last_iterations() const { return iterations_; }  // dense solves at the last depth
-  // Frees K's factor (on a 1e6-unknown shell gigabytes) until a solve needs it again: then it is
-  // factored anew, to the same bits (CHOLMOD is deterministic). The S columns computed so far
-  // are kept, so depths whose contact sets need no new column never refactor.
+  // Frees K's factor (234 MB with CHOLMOD's workspace on the 1e5-unknown cap) until a solve
+  // needs it again: then it is factored anew, to the same bits (CHOLMOD is deterministic). The S
+  // columns computed so far are kept, so depths whose contact sets need no new column never
+  // refactor.
   void release_factor() { solver_.reset(); }
   bool holds_factor() const { return solver_ != nullptr; }
 
