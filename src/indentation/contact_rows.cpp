@@ -195,11 +195,10 @@ void ContactRows::quantities(const TermPoint& p, IndentationState& out) const {
   const Vector3d& e = body().direction();
   const double lambda_max = multipliers(p.z).cwiseAbs().maxCoeff();
   const Vector3d axis_point = model.mesh.nodes[model.apex_node()];
-  out.force = 0;
+  out.force = total_force(multipliers(p.z));
   for (int i = 0; i < size(); ++i) {
     const int n = candidates_[i];
     const double lambda = p.z[first() + i];
-    out.force += lambda;
     if (lambda > 1e-9 * lambda_max && lambda > 0) {
       ++out.contact_nodes;
       out.contact_area += sym * shell().tributary_area(n);
@@ -207,7 +206,12 @@ void ContactRows::quantities(const TermPoint& p, IndentationState& out) const {
       out.contact_radius = std::max(out.contact_radius, (x - x.dot(e) * e).norm());
     }
   }
-  out.force *= sym;
+}
+
+double ContactRows::total_force(const Eigen::Ref<const Eigen::VectorXd>& multipliers) const {
+  double force = 0;
+  for (Eigen::Index i = 0; i < multipliers.size(); ++i) force += multipliers[i];
+  return force * shell().model().symmetry_factor;
 }
 
 void ContactRows::outputs(const TermPoint& p, IndentationState& out) const {

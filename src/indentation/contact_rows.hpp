@@ -55,6 +55,9 @@ class ContactRows : public ContactTerm {
   // Replaces the candidate set (mesh nodes).
   void set_candidates(const std::vector<int>& nodes);
   Eigen::Ref<const cont::Vector> multipliers(const cont::Vector& z) const { return unknowns(z); }
+  // T_N (N, whole shell) from the rows' multipliers: their sum times the symmetry factor, the one
+  // rule of quantities() and IndentationProblem::indenter_force.
+  double total_force(const Eigen::Ref<const Eigen::VectorXd>& multipliers) const;
 
   void add_pattern(Triplets& t) const override;
   // A non-local law's coupled candidates (LocalApproach::coupling_members), their rows' b as of

@@ -208,10 +208,7 @@ double IndentationProblem::indenter_force(const cont::Vector& z) const {
 
 double IndentationProblem::indenter_force_of(
     const Eigen::Ref<const Eigen::VectorXd>& multipliers) const {
-  // Summed in ContactRows::quantities' order, so that the bits agree.
-  double force = 0;
-  for (Eigen::Index i = 0; i < multipliers.size(); ++i) force += multipliers[i];
-  return force * model_.symmetry_factor;
+  return contact_->total_force(multipliers);
 }
 
 double IndentationProblem::inner(const cont::Vector& a, const cont::Vector& b) const {
