@@ -54,15 +54,26 @@ StepResult ArclengthStepper::step(const State& from, double ds) {
   Vector d_x;
   double d_p = 0.0;
   direction(from, d_x, d_p);
-  const double p_a = from.current.point.p;
+  const Point& a = from.current.point;
+  const double p_a = a.p;
   double target = 0.0;
   if (landing_target(p_a, ds, d_p, target)) {
-    StepResult landed = correct_at(from, d_x, d_p, target);
+    StepResult landed =
+        correct_at(from, d_x, d_p, target, problem_.corrector_start(a.x, p_a, target));
     landed.landed = landed.converged;
     if (landed.converged) return landed;
-  } else if (steep_ahead(from, ds)) {
-    StepResult steep = correct_at(from, d_x, d_p, p_a + ds * d_p);
-    if (steep.converged) return steep;
+  } else {
+    // At the predictor's p: where the branch is steep in p over the step, or where the problem
+    // has its own start there (the steep test, which reads the previous tangent, cannot judge a
+    // branch's first step), away from a fold of p.
+    const double p = p_a + ds * d_p;
+    const Vector own = bordered_.weight() * std::abs(d_p) >= kFoldSlope
+                           ? problem_.corrector_start(a.x, p_a, p)
+                           : Vector();
+    if (own.size() == a.x.size() || steep_ahead(from, ds)) {
+      StepResult steep = correct_at(from, d_x, d_p, p, own);
+      if (steep.converged) return steep;
+    }
   }
   // No target within reach, or no solution at it near the predictor (e.g. a fold just before
   // it): Keller's step; the tracer cuts it at a bound it crosses (Tracer::clip_to_target).
@@ -88,7 +99,7 @@ bool ArclengthStepper::steep_ahead(const State& from, double ds) const {
 
 bool ArclengthStepper::landing_target(double p_a, double ds, double d_p, double& target) const {
   if (!(bordered_.weight() * std::abs(d_p) >= kFoldSlope)) return false;
-  const double reach = p_a + ds * d_p;
+  const double reach = p_a + stretched(ds, settings_) * d_p;
   const double ahead = d_p > 0.0 ? 1.0 : -1.0;
   target = d_p > 0.0 ? settings_.p_max : settings_.p_min;
   for (double v : settings_.parameter_values)
@@ -97,21 +108,25 @@ bool ArclengthStepper::landing_target(double p_a, double ds, double d_p, double&
 }
 
 StepResult ArclengthStepper::correct_at(const State& from, const Vector& d_x, double d_p,
-                                        double target) {
+                                        double target, const Vector& own) {
   const Point& a = from.current.point;
   const double ds = (target - a.p) / d_p;  // the predictor's arclength to p = target
   StepResult out;
   out.direction_x = d_x;
   out.direction_p = d_p;
-  out.x = a.x + ds * d_x;
   out.p = target;
-  const NewtonResult r = solve_at(problem_, out.x, target, settings_.newton);
+  // The corrector at fixed p may leave the hyperplane's neighbourhood: accept only a point ahead
+  // along d and not beyond twice the predictor's arclength (else a jump along the branch).
+  const auto on_step = [&](const Vector& x) {
+    out.sigma_end = sigma_of(from, out, x, target);
+    return out.sigma_end > 0.0 && out.sigma_end <= 2.0 * ds;
+  };
+  const NewtonResult r = correct_at_parameter(problem_, target, own, a.x + ds * d_x,
+                                              settings_.newton, on_step, out.x, out.own_start);
   out.iterations = r.iterations;
   out.reason = r.reason;
   out.sigma_end = sigma_of(from, out, out.x, out.p);
-  // The corrector at fixed p may leave the hyperplane's neighbourhood: accept only a point ahead
-  // along d and not beyond twice the predictor's arclength (else a jump along the branch).
-  out.converged = r.converged && out.sigma_end > 0.0 && out.sigma_end <= 2.0 * ds;
+  out.converged = r.converged;
   return out;
 }
 

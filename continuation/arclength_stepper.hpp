@@ -60,9 +60,12 @@ class ArclengthStepper final : public Stepper {
   // (away from a fold: w |d_p| >= kFoldSlope); the landing is the step to it.
   bool landing_target(double p_a, double ds, double d_p, double& target) const;
   // The step to p = target: predictor u_a + (target - p_a) / d_p d, corrected at the fixed
-  // parameter target (natural corrector on the hyperplane p = target). Used to land on a target
-  // and, where the branch is steep in p (Settings::natural_corrector_slope), for any step.
-  StepResult correct_at(const State& from, const Vector& d_x, double d_p, double target);
+  // parameter target (natural corrector on the hyperplane p = target), from the problem's own
+  // start `own` first if it has one (Problem::corrector_start). Used to land on a target and,
+  // where the branch is steep in p (Settings::natural_corrector_slope) or the problem has its
+  // own start, for any step.
+  StepResult correct_at(const State& from, const Vector& d_x, double d_p, double target,
+                        const Vector& own);
   // Keller's step of arclength ds along d.
   StepResult arclength_step(const State& from, const Vector& d_x, double d_p, double ds);
 

@@ -44,11 +44,12 @@ class NaturalStepper final : public Stepper {
     const double p =
         std::isfinite(target) && ds >= dir_ * (target - a.p) ? target : a.p + dir_ * ds;
     StepResult out;
-    out.x = predict(from, p);
     out.p = p;
     out.direction_p = dir_;
     out.sigma_end = dir_ * (p - a.p);
-    const NewtonResult r = solve_at(problem_, out.x, p, settings_.newton);
+    const NewtonResult r = correct_at_parameter(
+        problem_, p, problem_.corrector_start(a.x, a.p, p), predict(from, p), settings_.newton,
+        [](const Vector&) { return true; }, out.x, out.own_start);
     out.converged = r.converged;
     out.iterations = r.iterations;
     out.reason = r.reason;

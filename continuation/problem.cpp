@@ -50,6 +50,10 @@ bool Problem::stability(const Vector& /*x*/, double /*p*/, int /*modes*/, Stabil
   return false;
 }
 
+Vector Problem::corrector_start(const Vector& /*x_from*/, double /*p_from*/, double /*p*/) {
+  return Vector();
+}
+
 bool Problem::adapt(Vector& /*x*/, double /*p*/) {
   return false;
 }

@@ -77,6 +77,15 @@ class Problem {
   virtual bool provides_stability() const;
   virtual bool stability(const Vector& x, double p, int modes, Stability& out);
 
+  // A start for the corrector at parameter p on the step out of the point (x_from, p_from), where
+  // the problem knows a better one than the predictor's; empty = none (the default). The tangent
+  // at a degenerate start sees nothing of what the step changes (an indenter at first touch: one
+  // node in contact, the step's solution has several); a simpler model's solution at p (the
+  // linear-kinematics one) does. The steppers' fixed-p correctors try it first and fall back to
+  // the predictor if the corrector fails from it or does not end on the step (each iteration is
+  // counted). A problem with several branches through (x_from, p_from) returns none there.
+  virtual Vector corrector_start(const Vector& x_from, double p_from, double p);
+
   // Called after each accepted point. The problem may change its size (e.g. grow a contact
   // candidate set) and map x to the new size in place; return true if it did (the library then
   // recomputes the tangent at that point, the previous secant/tangent being invalid).

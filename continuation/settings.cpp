@@ -86,6 +86,8 @@ void Settings::validate() const {
   require_field(target_iterations >= 1, c, "target_iterations", target_iterations, "must be >= 1");
   require_field(std::isfinite(step_growth_max) && step_growth_max >= 1.0, c, "step_growth_max",
                 step_growth_max, "must be >= 1");
+  require_field(landing_stretch >= 0.0 && landing_stretch <= 1.0, c, "landing_stretch",
+                landing_stretch, "must lie in [0, 1]");
   require_field(max_turn_deg > 0.0 && max_turn_deg < 180.0, c, "max_turn_deg", max_turn_deg,
                 "must lie in (0, 180)");
   require(!std::isnan(p_min) && !std::isnan(p_max) && p_min < p_max,

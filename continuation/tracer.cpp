@@ -122,7 +122,8 @@ class Tracer {
         return;
       }
       const double nominal = state_.step;
-      const double ds = std::min(nominal, stepper_.distance_to_target(state_));
+      const double to_target = stepper_.distance_to_target(state_);  // natural's; else infinity
+      const double ds = to_target <= stretched(nominal, settings_) ? to_target : nominal;
       if (!(ds > 0.0)) {  // natural, started on the bound ahead
         finish(Status::kReachedBound, "p is on the bound " + fmt(state_.current.point.p));
         return;
@@ -145,7 +146,7 @@ class Tracer {
         continue;
       }
       const bool at_bound = clip_to_target(step, b);
-      accept(step, b, nominal, ds < nominal || step.landed);
+      accept(step, b, nominal, ds != nominal || step.landed);
       if (!after_accept()) return;
       if (at_bound) {
         finish(Status::kReachedBound, "p reached the bound " + fmt(b.point.p));
@@ -256,10 +257,15 @@ class Tracer {
     state_.previous_p = a.point.p;
     state_.previous_tangent_p = a.point.tangent_p;
     state_.current = b;
-    // Step adaptation by the Newton iteration count (Allgower & Georg 2003, §6.1, in spirit).
+    // Step adaptation by the Newton iteration count (Allgower & Georg 2003, §6.1, in spirit): a
+    // measure of the predictor's error. A step corrected from the problem's own start measured
+    // that start instead: the next step may shrink, not grow on no evidence (the 1e5-unknown
+    // cap's first step, 2 iterations from the linear twin's state, doubled the second, which
+    // then took 5: docs/performance.md).
+    const double growth = step.own_start ? 1.0 : settings_.step_growth_max;
     const double factor =
         std::clamp(static_cast<double>(settings_.target_iterations) / std::max(step.iterations, 1),
-                   0.5, settings_.step_growth_max);
+                   0.5, growth);
     const double base = clipped ? nominal : step.sigma_end;
     state_.step = std::clamp(base * factor, settings_.step_min, settings_.step_max);
   }
@@ -362,6 +368,29 @@ class Tracer {
 };
 
 }  // namespace
+
+double stretched(double ds, const Settings& settings) {
+  return std::min((1.0 + settings.landing_stretch) * ds, std::max(ds, settings.step_max));
+}
+
+NewtonResult correct_at_parameter(Problem& problem, double p, const Vector& own,
+                                  const Vector& predicted, const NewtonSettings& settings,
+                                  const std::function<bool(const Vector&)>& on_step, Vector& x,
+                                  bool& from_own) {
+  int iterations = 0;
+  NewtonResult r;
+  for (const Vector* start : {&own, &predicted}) {
+    if (start->size() != predicted.size()) continue;
+    x = *start;
+    from_own = start == &own;
+    r = solve_at(problem, x, p, settings);
+    iterations += r.iterations;
+    r.converged = r.converged && on_step(x);
+    if (r.converged) break;
+  }
+  r.iterations = iterations;
+  return r;
+}
 
 Branch trace(Problem& problem, Stepper& stepper, BorderedSolver& bordered, const Start& start,
              const Settings& settings, const Callback& callback,

@@ -5,11 +5,13 @@
 // pseudo_arclength.hpp.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
 #include "continuation/checkpoint.hpp"
 #include "continuation/event_location.hpp"
+#include "continuation/kinsol_corrector.hpp"
 
 namespace si::cont {
 
@@ -27,6 +29,9 @@ struct StepResult {
   // The step was shortened to land on a bound or a Settings::parameter_values entry (its p is
   // that value exactly): the next step grows from the nominal size, not from this one.
   bool landed = false;
+  // Corrected from the problem's own start (Problem::corrector_start), not from the predictor:
+  // its iterations say nothing of the predictor's error, which the step control reads.
+  bool own_start = false;
 };
 
 class Stepper {
@@ -48,6 +53,20 @@ class Stepper {
   virtual bool solve_on_segment(const State& from, const StepResult& step, double sigma,
                                 const SegmentChord* chord, Vector& x, double& p) = 0;
 };
+
+// The longest step that lands on a target ahead instead of leaving a sliver to it:
+// min((1 + landing_stretch) ds, max(ds, step_max)) (Settings::landing_stretch).
+double stretched(double ds, const Settings& settings);
+
+// The corrector at the fixed parameter p of a step out of `from`: from the problem's own start
+// `own` (Problem::corrector_start; empty: none) if the corrector ends there on a point `on_step`
+// accepts, else from `predicted`. x gets the last corrector's end; converged = it converged to a
+// point on_step accepts; the iterations of both correctors count; from_own = x is the end of the
+// corrector from `own`.
+NewtonResult correct_at_parameter(Problem& problem, double p, const Vector& own,
+                                  const Vector& predicted, const NewtonSettings& settings,
+                                  const std::function<bool(const Vector&)>& on_step, Vector& x,
+                                  bool& from_own);
 
 // Where a fresh run starts: the point (solved at p first), the reference that orients its first
 // tangent (ref_x empty: by the sign of ref_p, i.e. Settings::direction) and the branch id its

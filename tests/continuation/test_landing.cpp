@@ -181,5 +181,51 @@ TEST(ContLanding, NaturalHitsNominalLoadFactors) {
   for (int i = 1; i <= n; ++i) EXPECT_EQ(branch.points[i].p, s.parameter_values[i - 1]);
 }
 
+// A bound a little beyond the step's reach is landed on by one step stretched to it, not by a
+// step and a sliver after it; one further than the stretch allows is not. Steps held constant
+// (no growth), so that the runs compared take the same steps up to the last.
+class StretchedLanding : public ::testing::TestWithParam<Method> {
+ protected:
+  Branch run(double p_max, double stretch) {
+    CountingCubic cubic;
+    Settings s = cubic_settings(p_max);
+    s.method = GetParam();
+    s.step_initial = 0.3;
+    s.step_max = 1.0;
+    s.step_growth_max = 1.0;
+    s.target_iterations = 100;
+    s.landing_stretch = stretch;
+    const Branch b = GetParam() == Method::kNatural
+                         ? natural(cubic, Vector::Zero(1), 0.0, s)
+                         : pseudo_arclength(cubic, Vector::Zero(1), 0.0, s);
+    EXPECT_EQ(b.status, Status::kReachedBound) << b.reason;
+    EXPECT_EQ(b.points.back().p, p_max);
+    EXPECT_NEAR(b.points.back().x(0), CountingCubic::branch(p_max), 1e-10);
+    return b;
+  }
+};
+
+TEST_P(StretchedLanding, ATargetJustBeyondAStepTakesOneStepNotASliver) {
+  // Where the unstretched run's last step is a sliver: the bound 10 % of a step past its
+  // penultimate point.
+  const Branch probe = run(2.0, 0.0);
+  ASSERT_GE(probe.points.size(), 4u);
+  const std::size_t k = probe.points.size() - 2;  // the point before the last step
+  const double p_k = probe.points[k].p, p_before = probe.points[k - 1].p;
+  const double near = p_k + 0.1 * (p_k - p_before);
+  const double far = p_k + 0.5 * (p_k - p_before);
+  const Branch sliver = run(near, 0.0);
+  const Branch stretched_run = run(near, 0.3);
+  EXPECT_EQ(stretched_run.points.size() + 1, sliver.points.size());
+  const Point& last = stretched_run.points.back();
+  EXPECT_GT(last.step, 1.05 * 0.3);
+  EXPECT_LE(last.step, 1.3 * 0.3 * (1 + 1e-9) + (GetParam() == Method::kNatural ? 0 : 0.02));
+  // Half a step past it: beyond the stretch, a step and then the rest.
+  EXPECT_EQ(run(far, 0.3).points.size(), run(far, 0.0).points.size());
+}
+
+INSTANTIATE_TEST_SUITE_P(Steppers, StretchedLanding,
+                         ::testing::Values(Method::kNatural, Method::kPseudoArclength));
+
 }  // namespace
 }  // namespace si::cont
