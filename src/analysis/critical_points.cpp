@@ -367,4 +367,10 @@ PathCallback watching(const std::shared_ptr<OnsetWatch>& watch, const PathCallba
   };
 }
 
+IndentationProblem::FirstStepStart first_step_from_twin(const std::shared_ptr<OnsetWatch>& watch,
+                                                        const IndentationProblem& problem) {
+  if (!watch) return nullptr;
+  return [watch, &problem](double h) { return watch->linear_state(h, problem); };
+}
+
 }  // namespace si

@@ -53,6 +53,10 @@ std::shared_ptr<OnsetWatch> watch_onset(const IndentationSetup& setup);
 void watch_point(OnsetWatch& watch, const PathPoint& point, const cont::Vector& z);
 // The run's callback with `watch` fed every point first (a null watch: the callback itself).
 PathCallback watching(const std::shared_ptr<OnsetWatch>& watch, const PathCallback& callback);
+// The run's first step from the twin's state at its depth (OnsetWatch::linear_state), for
+// IndentationProblem::set_first_step_start; holds the watch. A null watch: none.
+IndentationProblem::FirstStepStart first_step_from_twin(const std::shared_ptr<OnsetWatch>& watch,
+                                                        const IndentationProblem& problem);
 
 // The stiffness extrema of T(h) on `points` (force_slope as above: exact slopes where known), in
 // depth order.

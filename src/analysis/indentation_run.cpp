@@ -456,24 +456,6 @@ PathResult run_continuation(IndentationSetup& s, const PathCallback& callback,
 }
 }  // namespace
 
-cont::NewtonSettings path_newton_settings(const IndentationSetup& s) {
-  cont::NewtonSettings n;
-  n.relative_tolerance = 1e-10;
-  // The force a gap of one depth step would carry: the scale of the equilibrium residual.
-  n.residual_scale = s.problem->stiffness_scale() * s.spec.path.step;
-  n.max_iterations = kPathMaxIterations;
-  // KINSOL's step limit is an L2 length over all unknowns, and the multipliers are forces (N):
-  // its default, 1000 max(1, |z0|), cuts the Newton steps of a stiff shell short (measured: 2 %
-  // residual decrease per iteration on the paper's cap). Allow any step the line search accepts.
-  n.max_step = 1e12;
-  // A corrector whose ||R||_2 has fallen by less than 10 % over two iterations gives the step
-  // back to the continuation, which halves it: measured on the 250k-unknown cap near 9.6 mm, a
-  // creeping corrector cost 12-21 iterations (up to 12 min) before failing anyway; no converged
-  // solve of the studies and tests measured had such a stretch (docs/performance.md).
-  n.stall_window = 2;
-  return n;
-}
-
 PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& callback,
                                 const PathControl& control) {
   // A power-law local contact is nonlinear even with linear kinematics, and the fast path knows
@@ -483,10 +465,14 @@ PathResult run_indentation_path(IndentationSetup& setup, const PathCallback& cal
   // The onset of nonlinearity's bracket start is kept on the way (critical_points.hpp).
   const std::shared_ptr<OnsetWatch> watch = control.critical_points ? watch_onset(setup) : nullptr;
   const PathCallback watched = watching(watch, callback);
+  // The first step starts from the twin's state at its depth (6 -> 2 Newton iterations on the
+  // 1e5-unknown cap: docs/performance.md).
+  setup.problem->set_first_step_start(first_step_from_twin(watch, *setup.problem));
   PathResult r = fast ? run_linear(setup, watched)
                  : setup.spec.contact.solver == ContactSolver::kActiveSet
                      ? run_active_set(setup, watched)
                      : run_continuation(setup, watched, control);
+  setup.problem->set_first_step_start(nullptr);
   for (int k : {0, 2}) {
     const std::vector<cont::Event> found = critical_force_events(r.points, k);
     r.events.insert(r.events.end(), found.begin(), found.end());

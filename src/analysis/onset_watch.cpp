@@ -27,6 +27,16 @@ double OnsetWatch::linear_force(double h) {
   return twin_.problem->indenter_force_of(fast_.multipliers(h));
 }
 
+cont::Vector OnsetWatch::linear_state(double h, const IndentationProblem& p) {
+  const IndentationProblem& twin = *twin_.problem;
+  if (crossed_ || !passing_ || p.size() != twin.size() ||
+      p.num_shell_unknowns() != twin.num_shell_unknowns() || p.candidates() != twin.candidates())
+    return {};
+  // The twin's shell unknowns are the run's chart coordinates at the reference base
+  // (shell_chart.hpp); its multipliers are the same candidates' in the same order.
+  return fast_.solve(h);
+}
+
 void OnsetWatch::add(const PathPoint& p, const cont::Vector& z) {
   if (crossed_ || !passing_) return;
   const double h = p.state.depth;

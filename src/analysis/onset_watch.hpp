@@ -21,6 +21,11 @@ class OnsetWatch {
   // T_lin(h), N: the twin's force at depth h (mm), by the linear fast path.
   double linear_force(double h);
 
+  // The twin's state at depth h in the layout of the run's problem p, while the watch has not
+  // crossed: the run's first step starts from it (IndentationProblem::set_first_step_start).
+  // Empty if the two do not share their unknowns (the run's candidates have grown).
+  cont::Vector linear_state(double h, const IndentationProblem& p);
+
   // Feeds a converged point of the run and its state z. The watch keeps a bracket only from the
   // path's start (index 0) on: fed a later point first (a resumed run), it keeps none. Once it
   // has crossed (or stopped watching) the twin's factor is freed for the rest of the run: the

@@ -259,6 +259,14 @@ void IndentationProblem::probe(const cont::Vector& z, const std::vector<NodeStat
   probe_->measure(ProbePoint{s, contact_->candidates(), pressures, forces, whole_shell}, out);
 }
 
+cont::Vector IndentationProblem::corrector_start(const cont::Vector& z_from, double h_from,
+                                                 double h) {
+  const bool from_first_touch = h_from == 0.0 && (z_from.array() == 0.0).all();
+  if (!first_step_start_ || !from_first_touch) return {};
+  cont::Vector z = first_step_start_(h);
+  return z.size() == size() ? z : cont::Vector();
+}
+
 void IndentationProblem::set_probe(std::shared_ptr<const StateProbe> probe) {
   probe_ = std::move(probe);
   cached_state_.reset();

@@ -77,6 +77,16 @@ class IndentationProblem : public cont::Problem {
                               const std::vector<int>& which) override;
   std::vector<int> signature(const cont::Vector& z, double h) override;
   bool adapt(cont::Vector& z, double h) override;
+  // The corrector's start for the step out of first touch (h = 0, undeformed) to depth h, from
+  // set_first_step_start; none for any other step, or without one.
+  cont::Vector corrector_start(const cont::Vector& z_from, double h_from, double h) override;
+  // Where the first step's corrector starts: e.g. the linear-kinematics twin's state at the
+  // step's depth (analysis/onset_watch.hpp), in this problem's layout; empty for none. The tangent
+  // at first touch sees the one node that touches, where the step's solution presses several:
+  // from it the first step took 6 Newton iterations on the 1e5-unknown cap, 12 (580 s) on the
+  // 1e6. Empty function (the default): the predictor's start.
+  using FirstStepStart = std::function<cont::Vector(double h)>;
+  void set_first_step_start(FirstStepStart start) { first_step_start_ = std::move(start); }
   // Drops what one solve hands the next (the Jacobian solver's reused preconditioner or LU, the
   // terms' Newton guesses, the evaluate() cache): a resumed run, which starts without them, then
   // goes on bit for bit as the uninterrupted one.
@@ -196,6 +206,7 @@ class IndentationProblem : public cont::Problem {
   int border_ = 0;                  // bordering unknowns at the end of z (ContactTerm::borders)
   std::unique_ptr<JacobianSolver> solver_;
   std::shared_ptr<const StateProbe> probe_;
+  FirstStepStart first_step_start_;
   SparseMatrix jacobian_;
   std::vector<int> k_to_j_;  // value slot of K's entries in jacobian_
   // Where jacobian_ was last assembled and factored, and its chart's rotation blocks: the

@@ -133,13 +133,21 @@ TEST(CriticalForce, LinearPathOfTheCapHasNone) {
 }
 
 // The nonlinear path to 2 mm (pseudo-arclength, the library's curve-feature detector): the old
-// detector reported k11 inflections at 0.45 and 1.29 mm on its points; none is resolved.
+// detector reported k11 inflections at 0.45 and 1.29 mm on its points; none is resolved. Both
+// with the first step from the tangent at first touch (no onset watch: the points on which the
+// old detector reports) and from the linear twin's state (the default; other points).
 TEST(CriticalForce, NonlinearPathOfTheCapHasNoneBelow2mm) {
-  IndentationSetup s(cap_125("nonlinear", 2.0), 1);
-  const PathResult r = run_indentation_path(s);
+  IndentationSetup plain(cap_125("nonlinear", 2.0), 1);
+  PathControl control;
+  control.critical_points = false;
+  const PathResult r = run_indentation_path(plain, {}, control);
   ASSERT_TRUE(r.completed) << r.reason;
   EXPECT_TRUE(old_detector_reports(r.points, 0));
   EXPECT_EQ(inflections(r), 0);
+  IndentationSetup s(cap_125("nonlinear", 2.0), 1);
+  const PathResult d = run_indentation_path(s);
+  ASSERT_TRUE(d.completed) << d.reason;
+  EXPECT_EQ(inflections(d), 0);
 }
 
 }  // namespace

@@ -410,6 +410,50 @@ TEST(OnsetWatch, ResumedRunKeepsNoBracketAndSolvesNoTwin) {
   EXPECT_EQ(resumed->linear_solves(), 0);
 }
 
+// The first step out of first touch starts from the linear twin's state at its depth
+// (IndentationProblem::set_first_step_start): the step converges to the same point as a natural
+// solve at that depth, in fewer Newton iterations than from the tangent at first touch (which
+// sees the one touching node); the onset found is the same. The twin's state is not offered for
+// any other step, nor once the watch has crossed.
+TEST(OnsetWatch, FirstStepStartsFromTheTwinsStateAndConvergesFaster) {
+  IndentationSetup with(small_cap("nonlinear", 1.0), 1);
+  std::vector<std::pair<PathPoint, cont::Vector>> fed;
+  const PathResult a = run_indentation_path(with, [&](const PathPoint& pt, const cont::Vector& z) {
+    fed.emplace_back(pt, z);
+    return true;
+  });  // with its own watch: the twin's start
+  IndentationSetup without(small_cap("nonlinear", 1.0), 1);
+  PathControl control;
+  control.critical_points = false;  // no watch: the predictor's start
+  const PathResult b = run_indentation_path(without, {}, control);
+  ASSERT_TRUE(a.completed && b.completed) << a.reason << b.reason;
+  const PathPoint& first = a.points.at(1);
+  EXPECT_LT(first.iterations, b.points.at(1).iterations);
+  EXPECT_NEAR(first.state.force, force_at("nonlinear", first.state.depth),
+              1e-8 * first.state.force);
+  EXPECT_NEAR(a.points.back().state.force, b.points.back().state.force,
+              1e-8 * b.points.back().state.force);
+
+  IndentationSetup s(small_cap("nonlinear", 1.0), 1);
+  const std::shared_ptr<OnsetWatch> watch = watch_onset(s);
+  IndentationProblem& p = *s.problem;
+  int offered = 0;
+  const IndentationProblem::FirstStepStart twin = first_step_from_twin(watch, p);
+  p.set_first_step_start([&](double h) {
+    ++offered;
+    return twin(h);
+  });
+  const cont::Vector zero = p.initial_point();
+  const cont::Vector start = p.corrector_start(zero, 0.0, 0.1);
+  ASSERT_EQ(start.size(), p.size());
+  EXPECT_NEAR(p.indenter_force(start), watch->linear_force(0.1), 1e-9 * watch->linear_force(0.1));
+  EXPECT_EQ(p.corrector_start(start, 0.1, 0.2).size(), 0);  // not from first touch
+  EXPECT_EQ(offered, 1);
+  for (const auto& [pt, z] : fed) watch->add(pt, z);
+  ASSERT_TRUE(watch->bracket().has_value());
+  EXPECT_EQ(watch->linear_state(0.1, p).size(), 0);  // crossed: the twin's factor is freed
+}
+
 // A run the user stopped (Ctrl-C) reports the onset from its points, without the re-solves that
 // locate it to 1e-9 mm (each costs a step: minutes on a 1e6-unknown cap); the full run's located
 // onset lies within the stopped run's stated accuracy.
