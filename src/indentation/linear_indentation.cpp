@@ -33,20 +33,37 @@ LinearSolver& LinearIndentation::factor() {
   return *solver_;
 }
 
-const Eigen::VectorXd& LinearIndentation::column(int j) {
-  Eigen::VectorXd& c = columns_[j];
-  if (c.size() == 0) {
-    c = C_ * factor().solve(Eigen::VectorXd(Ct_.col(j)));
-    // A linear local law's share: c_L++ / A_j (vam) or the elastic face's coefficients.
-    problem_.add_local_compliance_column(j, c);
+void LinearIndentation::make_columns(const std::vector<int>& needed) {
+  std::vector<int> missing;
+  for (int j : needed)
+    if (columns_[j].size() == 0) missing.push_back(j);
+  const int n = static_cast<int>(Ct_.rows());
+  for (std::size_t first = 0; first < missing.size(); first += kColumnBlock) {
+    const int m = static_cast<int>(std::min(kColumnBlock, missing.size() - first));
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, m);
+    for (int k = 0; k < m; ++k) B.col(k) = Ct_.col(missing[first + k]);
+    const Eigen::MatrixXd X = factor().solve_columns(B);
+    for (int k = 0; k < m; ++k) {
+      const int j = missing[first + k];
+      columns_[j] = C_ * X.col(k);
+      // A linear local law's share: c_L++ / A_j (vam) or the elastic face's coefficients.
+      problem_.add_local_compliance_column(j, columns_[j]);
+    }
   }
-  return c;
+}
+
+const Eigen::VectorXd& LinearIndentation::column(int j) {
+  if (columns_[j].size() == 0) make_columns({j});
+  return columns_[j];
 }
 
 Eigen::VectorXd LinearIndentation::times(const Eigen::VectorXd& lambda) {
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(num_candidates());
+  std::vector<int> nonzero;
   for (int j = 0; j < num_candidates(); ++j)
-    if (lambda[j] != 0) y += lambda[j] * column(j);
+    if (lambda[j] != 0) nonzero.push_back(j);
+  make_columns(nonzero);
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(num_candidates());
+  for (int j : nonzero) y += lambda[j] * columns_[j];
   return y;
 }
 
@@ -55,6 +72,7 @@ Eigen::VectorXd LinearIndentation::minimiser_on(const Eigen::VectorXd& q,
   const int m = static_cast<int>(free.size());
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(q.size());
   if (m == 0) return lambda;
+  make_columns(free);
   Eigen::MatrixXd Sff(m, m);
   Eigen::VectorXd qf(m);
   for (int b = 0; b < m; ++b) {

@@ -7,13 +7,15 @@
 // It is solved by the primal-dual active-set method warm-started from the previous depth (all
 // contact changes at once, a few dense solves), with the primal active-set method (Nocedal &
 // Wright 2006, Alg. 16.3), which terminates finitely, as the fall-back; then x = K^-1 C^T lambda.
-// S is never formed whole: its column j (one sparse solve) is computed the first time candidate j
-// enters a contact set and kept, so the cost and memory follow the contact zone, not the
-// candidates (a 1e6-unknown cap has 57,000 candidates: a dense S would take 26 GB and 57,000
-// solves). Each depth costs a few small dense Cholesky solves and one sparse back-substitution.
+// S is never formed whole: its column j (one sparse solve; those entering together in blocks of
+// one multi-right-hand-side solve) is computed the first time candidate j enters a contact set
+// and kept, so the cost and memory follow the contact zone, not the candidates (a 1e6-unknown
+// cap has 57,000 candidates: a dense S would take 26 GB and 57,000 solves). Each depth costs a few
+// small dense Cholesky solves and one sparse back-substitution.
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "indentation/indentation_problem.hpp"
 
@@ -41,6 +43,10 @@ class LinearIndentation {
   int num_candidates() const { return static_cast<int>(C_.rows()); }
   // Column j of S, computed on first use.
   const Eigen::VectorXd& column(int j);
+  // The columns of `needed` not computed yet, by blocked solves of kColumnBlock right-hand sides
+  // (one pass over the factor per block, BLAS-3, where single solves take one per column).
+  void make_columns(const std::vector<int>& needed);
+  static constexpr std::size_t kColumnBlock = 32;
   // S lambda from the columns of lambda's nonzeros.
   Eigen::VectorXd times(const Eigen::VectorXd& lambda);
   // lambda on the set `free` (others zero) minimising the QP there: S_FF lambda_F = -q_F.
