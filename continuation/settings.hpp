@@ -101,8 +101,9 @@ struct Settings {
   int target_iterations = 4;
   double step_growth_max = 2.0;
   // A target (bound or parameter value) no further than (1 + landing_stretch) steps ahead is
-  // landed on by one step, stretched (never beyond step_max), instead of a step and a sliver
-  // after it (docs/theory/continuation.md §3). 0 = land only on targets within a step.
+  // landed on by one step, stretched (its parameter increment w |dp| never beyond step_max),
+  // instead of a step and a sliver after it (docs/theory/continuation.md §3). 0 = land only on
+  // targets within a step.
   double landing_stretch = 0.3;
   // A failed step is retried with ds / 2 down to step_min; a failure at step_min ends the run.
   // A step whose tangent turned by more than this is treated as failed (guards against jumping

@@ -123,7 +123,8 @@ class Tracer {
       }
       const double nominal = state_.step;
       const double to_target = stepper_.distance_to_target(state_);  // natural's; else infinity
-      const double ds = to_target <= stretched(nominal, settings_) ? to_target : nominal;
+      const double ds =
+          to_target <= stretched(nominal, settings_.step_max, settings_) ? to_target : nominal;
       if (!(ds > 0.0)) {  // natural, started on the bound ahead
         finish(Status::kReachedBound, "p is on the bound " + fmt(state_.current.point.p));
         return;
@@ -369,8 +370,8 @@ class Tracer {
 
 }  // namespace
 
-double stretched(double ds, const Settings& settings) {
-  return std::min((1.0 + settings.landing_stretch) * ds, std::max(ds, settings.step_max));
+double stretched(double dp, double limit, const Settings& settings) {
+  return std::min((1.0 + settings.landing_stretch) * dp, std::max(dp, limit));
 }
 
 NewtonResult correct_at_parameter(Problem& problem, double p, const Vector& own,

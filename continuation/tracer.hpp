@@ -54,9 +54,10 @@ class Stepper {
                                 const SegmentChord* chord, Vector& x, double& p) = 0;
 };
 
-// The longest step that lands on a target ahead instead of leaving a sliver to it:
-// min((1 + landing_stretch) ds, max(ds, step_max)) (Settings::landing_stretch).
-double stretched(double ds, const Settings& settings);
+// How far in p a step whose nominal increment of p is dp may go to land on a target instead of
+// leaving a sliver to it: min((1 + landing_stretch) dp, max(dp, limit)), limit the largest
+// increment of p that step_max allows (Settings::landing_stretch).
+double stretched(double dp, double limit, const Settings& settings);
 
 // The corrector at the fixed parameter p of a step out of `from`: from the problem's own start
 // `own` (Problem::corrector_start; empty: none) if the corrector ends there on a point `on_step`

@@ -224,6 +224,25 @@ TEST_P(StretchedLanding, ATargetJustBeyondAStepTakesOneStepNotASliver) {
   EXPECT_EQ(run(far, 0.3).points.size(), run(far, 0.0).points.size());
 }
 
+// A bound one step_max ahead in p (w |p - p0| = step_max: a path whose depth_max is its
+// step_max) is reached in one pseudo-arclength step, although that step's arclength exceeds
+// step_max by its x-part: the stretch bounds the p-part; without it, a step of step_max and a
+// sliver to the bound. (w = 3: the tangent is mostly p, as on an indentation path.)
+TEST(ContLanding, ABoundOneStepMaxAheadInPIsOneStep) {
+  for (double stretch : {0.3, 0.0}) {
+    CountingCubic cubic;
+    Settings s = cubic_settings(0.5 / 3.0);
+    s.parameter_weight = 3.0;
+    s.step_initial = 0.5;
+    s.step_max = 0.5;
+    s.landing_stretch = stretch;
+    const Branch b = pseudo_arclength(cubic, Vector::Zero(1), 0.0, s);
+    ASSERT_EQ(b.status, Status::kReachedBound) << b.reason;
+    EXPECT_EQ(b.points.back().p, 0.5 / 3.0);
+    EXPECT_EQ(b.points.size(), stretch > 0 ? 2u : 3u) << "landing_stretch " << stretch;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Steppers, StretchedLanding,
                          ::testing::Values(Method::kNatural, Method::kPseudoArclength));
 
