@@ -83,7 +83,7 @@ class IndentationProblem : public cont::Problem {
   // Where the first step's corrector starts: e.g. the linear-kinematics twin's state at the
   // step's depth (analysis/onset_watch.hpp), in this problem's layout; empty for none. The tangent
   // at first touch sees the one node that touches, where the step's solution presses several:
-  // from it the first step took 6 Newton iterations on the 1e5-unknown cap, 12 (580 s) on the
+  // from it the first step took 6 Newton iterations on the 1e5-unknown cap, 12 (516 s) on the
   // 1e6. Empty function (the default): the predictor's start.
   using FirstStepStart = std::function<cont::Vector(double h)>;
   void set_first_step_start(FirstStepStart start) { first_step_start_ = std::move(start); }
