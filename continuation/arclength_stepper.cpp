@@ -101,10 +101,9 @@ bool ArclengthStepper::landing_target(double p_a, double ds, double d_p, double&
   if (!(bordered_.weight() * std::abs(d_p) >= kFoldSlope)) return false;
   // The stretch keeps the step's p-part w |dp| within step_max; its arclength may exceed it by
   // the x-part alone (a path whose step_max is its depth_max lands on it in one step).
-  const double w = bordered_.weight();
-  const double reach = p_a + (d_p > 0.0 ? 1.0 : -1.0) *
-                                 stretched(ds * std::abs(d_p), settings_.step_max / w, settings_);
   const double ahead = d_p > 0.0 ? 1.0 : -1.0;
+  const double reach = p_a + ahead * stretched(ds * std::abs(d_p),
+                                               settings_.step_max / bordered_.weight(), settings_);
   target = d_p > 0.0 ? settings_.p_max : settings_.p_min;
   for (double v : settings_.parameter_values)
     if (ahead * (v - p_a) > 0.0 && ahead * (v - target) < 0.0) target = v;
