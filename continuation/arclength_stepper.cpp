@@ -121,8 +121,8 @@ StepResult ArclengthStepper::correct_at(const State& from, const Vector& d_x, do
   // The corrector at fixed p may leave the hyperplane's neighbourhood: accept only a point ahead
   // along d and not beyond twice the predictor's arclength (else a jump along the branch).
   const auto on_step = [&](const Vector& x) {
-    out.sigma_end = sigma_of(from, out, x, target);
-    return out.sigma_end > 0.0 && out.sigma_end <= 2.0 * ds;
+    const double sigma = sigma_of(from, out, x, target);
+    return sigma > 0.0 && sigma <= 2.0 * ds;
   };
   const NewtonResult r = correct_at_parameter(problem_, target, own, a.x + ds * d_x,
                                               settings_.newton, on_step, out.x, out.own_start);

@@ -67,6 +67,14 @@ TEST(ContSettings, RejectsNaturalCorrectorSlopeOutsideZeroToOne) {
                   "continuation.natural_corrector_slope = nan");
 }
 
+TEST(ContSettings, RejectsLandingStretchOutsideZeroToOne) {
+  expect_rejected([](Settings& s) { s.landing_stretch = -0.1; },
+                  "continuation.landing_stretch = -0.1");
+  expect_rejected([](Settings& s) { s.landing_stretch = 2.0; }, "continuation.landing_stretch = 2");
+  expect_rejected([](Settings& s) { s.landing_stretch = std::nan(""); },
+                  "continuation.landing_stretch = nan");
+}
+
 TEST(ContSettings, RejectsBadStabilityAndFeatureSettings) {
   expect_rejected([](Settings& s) { s.stability_modes = -1; },
                   "continuation.stability_modes = -1 must be >= 0");
